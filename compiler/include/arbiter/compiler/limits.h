@@ -1,0 +1,43 @@
+// Limit profiles: named sets of implementation limits (data, not code).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace arbiter::compiler {
+
+// One implementation limit. Keys are "<stage>.<name>", e.g. "arbvp.max_instructions",
+// "arbfp.max_tex_indirections"; the full list is LimitKeys().
+struct LimitKey {
+  std::string_view key;
+  std::string_view gl_name;  // the GL query it mirrors, e.g. "MAX_PROGRAM_INSTRUCTIONS_ARB"
+  std::string_view description;
+};
+
+// Every known key, in a stable order.
+const std::vector<LimitKey>& LimitKeys();
+
+struct LimitProfile {
+  std::string name;
+  std::map<std::string, int64_t, std::less<>> values;
+
+  // The value of a key (every built-in profile defines every key).
+  int64_t Get(std::string_view key) const;
+};
+
+// Built-in profiles: "spec-min" (the minimum maximums the specifications require) and
+// "mesa" (what Mesa 22.3 reports through OSMesa). Returns nullptr for another name.
+const LimitProfile* BuiltinProfile(std::string_view name);
+std::vector<std::string_view> BuiltinProfileNames();
+
+// Loads `--limits ARG`: a built-in profile name, or a JSON file
+// {"name": "...", "base": "spec-min"|"mesa", "limits": {"arbvp.max_instructions": 256, ...}}
+// whose keys override the base (default base: spec-min). Unknown keys, non-integer or
+// negative values are errors: returns nullopt and sets `error`.
+std::optional<LimitProfile> LoadLimitProfile(const std::string& arg, std::string* error);
+
+}  // namespace arbiter::compiler

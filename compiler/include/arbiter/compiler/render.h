@@ -1,0 +1,37 @@
+// Renderers of diagnostics: text (terminal and logs), JSON and SARIF 2.1.0.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "arbiter/compiler/diagnostic.h"
+
+namespace arbiter::compiler {
+
+// The diagnostics of one input file, as renderers take them.
+struct FileReport {
+  std::string path;  // as given on the command line
+  std::vector<Diagnostic> diagnostics;
+  int dropped_errors = 0;  // errors not shown because of --error-limit
+};
+
+struct TextOptions {
+  bool color = false;       // ANSI colour (only when writing to a terminal)
+  bool show_source = true;  // the source line and a caret line under the range
+};
+
+// `path:line:col: error: message [code]`, the source line (tabs expanded to 8 columns,
+// long lines clipped around the column) and `^~~~` under the range; notes likewise.
+std::string RenderText(const FileReport& report, const TextOptions& options);
+
+// One JSON document for many files:
+// {"files":[{"path":..., "diagnostics":[{"code","severity","message","line","column",
+//  "end_line","end_column","offset","length","notes":[...]}], "errors":N, "warnings":N}]}
+std::string RenderJson(const std::vector<FileReport>& reports);
+
+// SARIF 2.1.0 with one run, the tool "arbiter", rules for every code used (id = code,
+// shortDescription = summary), results with physical locations (1-based line/column,
+// byteOffset) and related locations for notes.
+std::string RenderSarif(const std::vector<FileReport>& reports, const std::string& tool_version);
+
+}  // namespace arbiter::compiler

@@ -1,0 +1,57 @@
+// Source text: the bytes of one input and line/column lookup from byte offsets.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace arbiter::compiler {
+
+// A half-open byte range [begin, end) in one SourceFile.
+struct Range {
+  uint32_t begin = 0;
+  uint32_t end = 0;
+};
+
+// A 1-based line and 1-based column. Columns count characters (UTF-8 decoded), so a
+// multi-byte character in a comment advances the column by one.
+struct LineCol {
+  uint32_t line = 1;
+  uint32_t column = 1;
+};
+
+// Owns the bytes of one input. "\n", "\r\n" and "\r" each end one line (both ARB specs
+// treat carriage return as whitespace and as a comment terminator).
+class SourceFile {
+ public:
+  SourceFile(std::string path, std::string text);
+
+  const std::string& path() const { return path_; }
+  const std::string& text() const { return text_; }
+
+  // Line and column of a byte offset (offset == size() is the end of the text).
+  LineCol Locate(uint32_t offset) const;
+  // Number of lines (a final line without terminator counts; an empty file has one line).
+  uint32_t line_count() const { return static_cast<uint32_t>(line_starts_.size()); }
+  // The text of a 1-based line, without its terminator.
+  std::string_view LineText(uint32_t line) const;
+  // Byte offset at which a 1-based line starts.
+  uint32_t LineStart(uint32_t line) const;
+
+ private:
+  std::string path_;
+  std::string text_;
+  std::vector<uint32_t> line_starts_;
+};
+
+// Reads a whole file ("-" reads standard input). On failure returns false and sets `error`
+// to a lower-case reason ("no such file", "is a directory", ...).
+[[nodiscard]] bool ReadFileBytes(const std::string& path, std::string* bytes,
+                                 std::string* error);
+
+// Writes `bytes` to `path` atomically (temporary file in the same folder, then rename).
+[[nodiscard]] bool WriteFileAtomically(const std::string& path, std::string_view bytes,
+                                       std::string* error);
+
+}  // namespace arbiter::compiler
