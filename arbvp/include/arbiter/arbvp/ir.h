@@ -90,7 +90,7 @@ enum class VertexAttrib : uint8_t {
   Position,
   Weight,
   Normal,
-  Color,           // primary colour
+  Color,  // primary colour
   SecondaryColor,
   FogCoord,
   TexCoord,
@@ -164,7 +164,10 @@ struct Binding {
   MatrixModifier modifier = MatrixModifier::None;
   uint8_t row = 0;
   std::array<float, 4> value{0.0f, 0.0f, 0.0f, 1.0f};  // Constant
-  Range range;  // the binding's text
+  Range range;                                         // the binding's text
+  Range selector;        // the index integer ([n]) that range checks point at; else == range
+  Range row_sel;         // the row integer of .row[n] (MatrixRow)
+  bool indexed = false;  // the binding spelled its selector ("texcoord[0]", not "texcoord")
 };
 
 // The spelling of a binding as in the specs, e.g. "state.matrix.mvp.inverse.row[2]".
@@ -221,6 +224,8 @@ struct Instruction {
   TexTarget target = TexTarget::Tex2D;
   Range range;  // the whole instruction, opcode to last operand
   Range opcode_range;
+  Range unit_range;    // Sample: the texture unit (or the 'texture' keyword)
+  Range target_range;  // Sample: the target
 };
 
 struct Program {

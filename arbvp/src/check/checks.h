@@ -1,0 +1,43 @@
+// The semantic check families, run in a fixed order by checker.cpp.
+#pragma once
+
+#include <string_view>
+
+#include "../diag.h"
+#include "arbiter/arbvp/check.h"
+#include "arbiter/arbvp/ir.h"
+#include "arbiter/compiler/diagnostic.h"
+#include "arbiter/compiler/limits.h"
+
+namespace arbiter::arbvp {
+
+struct CheckContext {
+  const Program& program;
+  const compiler::SourceFile& source;
+  compiler::DiagnosticSink* sink;
+  // Explicit profile (--limits), or null for portability mode (spec-min warns, mesa errs).
+  const compiler::LimitProfile* profile;
+  Stats* stats;
+
+  bool vp() const { return program.kind == ProgramKind::Vertex; }
+  compiler::Diagnostic* Report(Diag diag, Range range, std::string message) const {
+    return sink->Report(Info(diag), &source, range, std::move(message));
+  }
+  // The limit key of a stage-specific resource: "arbvp.<name>" or "arbfp.<name>".
+  std::string StageKey(std::string_view name) const;
+};
+
+// Checks `used` against the limit `key` (minus `reserve`, what options take for
+// themselves). `used` is a count, or index + 1 for a selector. Reports `diag` (error) when
+// over the enforced limit, or arb-limit-portability (warning) when only over spec-min in
+// portability mode. Returns false when an error was reported.
+bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
+                Range range, std::string_view what);
+
+void CheckProgramOptions(const CheckContext& ctx);  // check_options.cpp
+void CheckBindings(const CheckContext& ctx);        // check_bindings.cpp
+void CheckOperands(const CheckContext& ctx);        // check_operands.cpp
+void CheckTextures(const CheckContext& ctx);        // check_textures.cpp
+void CheckResources(const CheckContext& ctx);       // check_limits.cpp
+
+}  // namespace arbiter::arbvp

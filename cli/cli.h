@@ -1,0 +1,61 @@
+// Shared pieces of the arbiter command: inputs, options common to verbs, exit codes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arbiter/arbvp/ir.h"
+#include "arbiter/compiler/diagnostic.h"
+#include "arbiter/compiler/limits.h"
+#include "arbiter/compiler/render.h"
+#include "arbiter/compiler/source.h"
+
+namespace arbiter::cli {
+
+// Process exit codes (architecture.md).
+enum class Exit : int { Ok = 0, Rejected = 1, Usage = 2, Environment = 3 };
+
+// The worse of two outcomes: Environment > Usage > Rejected > Ok.
+Exit Worse(Exit a, Exit b);
+
+// One input as given on the command line (a directory expands to the files under it).
+struct Input {
+  std::string path;          // as given, or as found under a given directory; "-" is stdin
+  std::string display_path;  // "<stdin>" for "-"
+};
+
+// Expands files and directories (recursively, sorted, ARB program extensions only).
+// Missing paths are kept: reading them reports the error.
+std::vector<Input> ExpandInputs(const std::vector<std::string>& args);
+
+// Reads an input into a SourceFile; on failure returns null and adds an `io-read` error to
+// `report`.
+std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::FileReport* report);
+
+// --format, --color, --error-limit, -Werror, --limits, --stage shared by check and info.
+struct CommonOptions {
+  std::string format = "text";
+  std::string color = "auto";
+  int error_limit = 20;
+  bool werror = false;
+  std::string limits;
+  std::string stage;
+  std::vector<std::string> files;
+};
+void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);
+
+// Resolves --limits; on error prints it and returns false.
+bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitProfile>* out);
+// Resolves --stage for ARB inputs (arbvp/arbfp); GLSL stages are rejected for now.
+bool ResolveStage(const CommonOptions& options, std::optional<arbvp::ProgramKind>* out);
+
+// Prints the reports in the chosen format (text to stderr, json/sarif to stdout).
+void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options);
+
+int RunCheck(const CommonOptions& options);
+int RunInfo(const CommonOptions& options);
+
+}  // namespace arbiter::cli

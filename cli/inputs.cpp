@@ -1,0 +1,125 @@
+// Command-line inputs: directory expansion, reading files and stdin, shared options.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+// Reading failures are diagnostics without a file position.
+const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
+                                       "an input could not be read", ""};
+
+bool IsProgramExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  return ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp";
+}
+
+}  // namespace
+
+Exit Worse(Exit a, Exit b) {
+  auto rank = [](Exit e) {
+    switch (e) {
+      case Exit::Ok:
+        return 0;
+      case Exit::Rejected:
+        return 1;
+      case Exit::Usage:
+        return 2;
+      case Exit::Environment:
+        return 3;
+    }
+    return 3;
+  };
+  return rank(a) >= rank(b) ? a : b;
+}
+
+std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
+  std::vector<Input> inputs;
+  for (const std::string& arg : args) {
+    std::error_code ec;
+    if (arg != "-" && std::filesystem::is_directory(arg, ec)) {
+      std::vector<std::string> found;
+      auto options = std::filesystem::directory_options::skip_permission_denied;
+      for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
+           !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+        if (it->is_regular_file(ec) && IsProgramExtension(it->path())) {
+          found.push_back(it->path().generic_string());
+        }
+      }
+      std::sort(found.begin(), found.end());
+      for (std::string& path : found) inputs.push_back({path, path});
+      continue;
+    }
+    inputs.push_back({arg, arg == "-" ? "<stdin>" : arg});
+  }
+  return inputs;
+}
+
+std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::FileReport* report) {
+  std::string bytes;
+  std::string error;
+  if (!compiler::ReadFileBytes(input.path, &bytes, &error)) {
+    compiler::Diagnostic d;
+    d.info = &kIoRead;
+    d.severity = compiler::Severity::Error;
+    d.path = input.display_path;
+    d.message = fmt::format("cannot read '{}': {}", input.display_path, error);
+    report->diagnostics.push_back(std::move(d));
+    return nullptr;
+  }
+  return std::make_unique<compiler::SourceFile>(input.display_path, std::move(bytes));
+}
+
+void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
+  app->add_option("files", options->files, "program files or directories ('-' reads stdin)")
+      ->required();
+  app->add_option("--format", options->format, "output format")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  app->add_option("--color", options->color, "colour text output")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  app->add_option("--limits", options->limits,
+                  "limit profile: spec-min, mesa, or a JSON file (default: portability "
+                  "warnings)");
+  app->add_option("--stage", options->stage, "program kind instead of the header's")
+      ->check(CLI::IsMember({"arbvp", "arbfp", "vert", "frag"}));
+  if (diagnostics) {
+    app->add_option("--error-limit", options->error_limit,
+                    "stop reporting errors of a file after N (0: no limit)")
+        ->check(CLI::NonNegativeNumber);
+    app->add_flag("-W,--Werror", options->werror, "treat warnings as errors");
+  }
+}
+
+bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitProfile>* out) {
+  if (options.limits.empty()) return true;
+  std::string error;
+  *out = compiler::LoadLimitProfile(options.limits, &error);
+  if (!*out) {
+    fmt::print(stderr, "arbiter: error: --limits: {}\n", error);
+    return false;
+  }
+  return true;
+}
+
+bool ResolveStage(const CommonOptions& options, std::optional<arbvp::ProgramKind>* out) {
+  if (options.stage.empty()) return true;
+  if (options.stage == "arbvp") {
+    *out = arbvp::ProgramKind::Vertex;
+  } else if (options.stage == "arbfp") {
+    *out = arbvp::ProgramKind::Fragment;
+  } else {
+    fmt::print(stderr,
+               "arbiter: error: --stage {}: GLSL checking is not available in this "
+               "build yet\n",
+               options.stage);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace arbiter::cli

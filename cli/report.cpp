@@ -1,0 +1,38 @@
+// Printing diagnostics in the chosen format.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+bool UseColor(const std::string& mode) {
+  if (mode == "always") return true;
+  if (mode == "never") return false;
+  const char* term = std::getenv("TERM");
+  return isatty(fileno(stderr)) && std::getenv("NO_COLOR") == nullptr && term != nullptr &&
+         std::string_view(term) != "dumb";
+}
+
+}  // namespace
+
+void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options) {
+  if (options.format == "json") {
+    std::fputs(compiler::RenderJson(reports).c_str(), stdout);
+  } else if (options.format == "sarif") {
+    std::fputs(compiler::RenderSarif(reports, ARBITER_VERSION).c_str(), stdout);
+  } else {
+    compiler::TextOptions text;
+    text.color = UseColor(options.color);
+    for (const compiler::FileReport& report : reports) {
+      std::fputs(compiler::RenderText(report, text).c_str(), stderr);
+    }
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace arbiter::cli
