@@ -38,13 +38,17 @@ struct Diagnostic {
 };
 
 // Collects diagnostics in order. `error_limit` > 0 stops recording errors past the limit;
-// the renderers then add a final note that says so.
+// the renderers then add a final note that says so. Once `error_limit` errors are stored,
+// every later diagnostic is dropped: errors are counted in dropped(), later warnings and
+// notes are neither stored nor counted (a later PromoteWarnings() counts the warnings as
+// dropped errors). error_count() counts stored errors only.
 class DiagnosticSink {
  public:
   explicit DiagnosticSink(int error_limit = 0) : error_limit_(error_limit) {}
 
   // Records a diagnostic with the info's default severity. Returns the stored diagnostic
-  // so the caller can add notes (nullptr when dropped by the error limit).
+  // so the caller can add notes (nullptr when dropped by the error limit); the pointer is
+  // valid until the next Report or PromoteWarnings.
   Diagnostic* Report(const DiagnosticInfo& info, const SourceFile* file, Range range,
                      std::string message);
   // Same, with an explicit severity (a warning promoted to an error, say).
@@ -58,7 +62,9 @@ class DiagnosticSink {
   // True when errors were dropped because of the error limit.
   bool limit_reached() const { return dropped_ > 0; }
   int dropped() const { return dropped_; }
-  // Promotes every warning to an error (-Werror).
+  // Promotes every warning to an error (-Werror). The error limit is applied again in
+  // report order, as if the warnings had been reported as errors: promoted or original
+  // errors past the limit are removed and counted in dropped().
   void PromoteWarnings();
 
  private:
@@ -66,9 +72,11 @@ class DiagnosticSink {
   int errors_ = 0;
   int warnings_ = 0;
   int dropped_ = 0;
+  int dropped_warnings_ = 0;  // warnings dropped after the limit (errors if promoted)
   std::vector<Diagnostic> diags_;
 };
 
+// "error", "warning" or "note".
 std::string_view SeverityName(Severity severity);
 
 }  // namespace arbiter::compiler
