@@ -73,6 +73,7 @@ CheckResult CheckProgram(const compiler::SourceFile& source, const CheckOptions&
   CheckResult result;
   ProgramKind kind;
   int errors_before = sink->error_count() + sink->dropped();
+  int counted_before = sink->error_count();
   if (!ParseHeader(source, sink, &kind)) return result;
   Range header{0, static_cast<uint32_t>(kVpHeader.size())};
   if (options.expected_kind && *options.expected_kind != kind) {
@@ -85,7 +86,7 @@ CheckResult CheckProgram(const compiler::SourceFile& source, const CheckOptions&
   }
   std::vector<Token> tokens = Lex(source, header.end, sink);
   result.program = ParseProgram(source, tokens, kind, header, sink);
-  CheckContext ctx{*result.program, source, sink, options.profile, &result.stats};
+  CheckContext ctx{*result.program, source, sink, options.profile, &result.stats, counted_before};
   CheckProgramOptions(ctx);
   CheckBindings(ctx);
   CheckOperands(ctx);

@@ -155,6 +155,7 @@ class Parser {
         }
         return;
       }
+      size_t start = pos_;
       try {
         if (t.kind == Tok::Ident && Text(t) == "OPTION") {
           ParseOption(seen_statement);
@@ -163,6 +164,7 @@ class Parser {
           ParseStatement();
         }
       } catch (const StatementError&) {
+        if (pos_ == start) Advance();  // always make progress
         Synchronize();
       }
     }
@@ -200,6 +202,10 @@ class Parser {
   void ExpectSemicolon(std::string_view what) {
     if (Accept(Tok::Semicolon)) return;
     const Token& next = Peek();
+    if (next.kind == Tok::Comma) {
+      Fail(Diag::SyntaxExpected, RangeOf(next),
+           fmt::format("expected ';' after the {}, found ',': too many operands", what));
+    }
     Report(Diag::SyntaxMissingSemicolon, {last_end_, last_end_},
            fmt::format("expected ';' after the {}, found {}", what, Describe(next)));
     bool later_line = source_.Locate(next.begin).line > source_.Locate(last_end_).line;
@@ -315,6 +321,12 @@ class Parser {
     try {
       const Token& b = Peek();
       if (!IsAttribKeyword(b)) {
+        if (b.kind == Tok::Ident && Text(b) == (vp() ? "fragment" : "vertex")) {
+          Fail(Diag::BindingStage, RangeOf(b),
+               fmt::format("'{}.*' bindings exist only in {} programs; {} programs bind {}",
+                           Text(b), vp() ? "fragment" : "vertex", vp() ? "vertex" : "fragment",
+                           vp() ? "vertex.*" : "fragment.*"));
+        }
         if (b.kind == Tok::Ident && (Text(b) == "state" || Text(b) == "program")) {
           Fail(Diag::DeclWrongKind, RangeOf(b),
                fmt::format("ATTRIB binds {} attributes; '{}' bindings are declared with PARAM",
@@ -580,6 +592,25 @@ class Parser {
     }
     return false;
   }
+  // True for a word made of 1 to 4 component letters (a swizzle or mask, valid or not).
+  static bool LooksLikeSwizzle(std::string_view w) {
+    if (w.empty() || w.size() > 4) return false;
+    for (char c : w) {
+      if (std::string_view("xyzwrgba").find(c) == std::string_view::npos) return false;
+    }
+    return true;
+  }
+  // After an optional ".word" of a binding: a following ".other" that cannot be a swizzle or
+  // mask is a misspelt binding word.
+  void RejectUnknownSuffix(const std::vector<std::string_view>& words, std::string_view what) {
+    if (!PeekIs(Tok::Dot) || !PeekIs(Tok::Ident, 1)) return;
+    const Token& t = Peek(1);
+    if (LooksLikeSwizzle(Text(t))) return;
+    std::string hint = ClosestMatch(Text(t), words);
+    Fail(Diag::BindingUnknown, RangeOf(t),
+         fmt::format("unknown {} '{}'; expected {}{}", what, Text(t), JoinAlternatives(words),
+                     hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint)));
+  }
   void ExpectDot(std::string_view after) { Expect(Tok::Dot, fmt::format("'.' after '{}'", after)); }
 
   // ---- bindings ------------------------------------------------------------------------
@@ -603,6 +634,7 @@ class Parser {
         "vertex attribute");
     std::string_view w = Text(item);
     b.selector = RangeOf(item);
+    b.item = RangeOf(item);
     if (w == "position") {
       b.vertex_attrib = VertexAttrib::Position;
     } else if (w == "weight") {
@@ -616,6 +648,7 @@ class Parser {
       if (AcceptDotWord({"primary", "secondary"}, &type) && type == "secondary") {
         b.vertex_attrib = VertexAttrib::SecondaryColor;
       }
+      RejectUnknownSuffix({"primary", "secondary"}, "colour type");
     } else if (w == "fogcoord") {
       b.vertex_attrib = VertexAttrib::FogCoord;
     } else if (w == "texcoord") {
@@ -647,6 +680,7 @@ class Parser {
       if (AcceptDotWord({"primary", "secondary"}, &type) && type == "secondary") {
         b.fragment_attrib = FragmentAttrib::SecondaryColor;
       }
+      RejectUnknownSuffix({"primary", "secondary"}, "colour type");
     } else if (w == "texcoord") {
       b.fragment_attrib = FragmentAttrib::TexCoord;
       ParseOptionalIndex(&b, "a texture coordinate number");
@@ -689,6 +723,7 @@ class Parser {
         if (AcceptDotWord({"front", "back"}, &word))
           b.face = word == "back" ? Face::Back : Face::Front;
         if (AcceptDotWord({"primary", "secondary"}, &word)) b.secondary = word == "secondary";
+        RejectUnknownSuffix({"front", "back", "primary", "secondary"}, "colour result");
       } else if (w == "fogcoord") {
         b.result = ResultReg::FogCoord;
       } else if (w == "pointsize") {
@@ -907,6 +942,7 @@ class Parser {
                             "matrix name");
     std::string_view n = Text(name);
     b.selector = RangeOf(name);
+    b.item = RangeOf(name);
     if (n == "modelview") {
       b.matrix = MatrixName::Modelview;
       ParseOptionalIndex(&b, "a modelview matrix number");
@@ -929,6 +965,14 @@ class Parser {
       b.modifier = word == "inverse"     ? MatrixModifier::Inverse
                    : word == "transpose" ? MatrixModifier::Transpose
                                          : MatrixModifier::InvTrans;
+    }
+    if (PeekIs(Tok::Dot) && PeekIs(Tok::Ident, 1) && Text(Peek(1)) != "row" &&
+        !LooksLikeSwizzle(Text(Peek(1)))) {
+      const Token& bad = Peek(1);
+      Fail(Diag::BindingUnknown, RangeOf(bad),
+           fmt::format("unknown matrix modifier '{}'; expected 'inverse', 'transpose', "
+                       "'invtrans' or 'row'",
+                       Text(bad)));
     }
     int lo = 0;
     int hi = 3;
@@ -997,6 +1041,10 @@ class Parser {
       ReportUnknownStatement(op_token);
     }
     const OpcodeInfo& info = GetOpcodeInfo(inst.op);
+    if (inst.saturate && inst.op == Opcode::KIL) {
+      Fail(Diag::SyntaxUnknownOpcode, RangeOf(op_token),
+           "unknown instruction 'KIL_SAT': KIL writes no register, so it has no _SAT form");
+    }
     if (!OpcodeInStage(inst.op, kind_)) {
       Fail(Diag::SyntaxOpcodeStage, RangeOf(op_token),
            fmt::format("'{}' is a {}-program instruction; it is not available in {} programs",
@@ -1332,6 +1380,12 @@ class Parser {
             fmt::format("PARAM array '{}' must be indexed, as in '{}[0]'", Text(name), Text(name)));
       }
       return src;
+    }
+    if (allow_constant && (t.kind == Tok::Minus || t.kind == Tok::Plus) &&
+        (PeekIs(Tok::Integer, 1) || PeekIs(Tok::Float, 1))) {
+      Fail(Diag::OperandNegatedConstant, RangeOf(t),
+           "an inline scalar constant takes no sign of its own; the operand has one sign, "
+           "before the constant");
     }
     if (allow_constant &&
         (t.kind == Tok::Integer || t.kind == Tok::Float || t.kind == Tok::LBrace)) {

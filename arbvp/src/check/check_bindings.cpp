@@ -37,7 +37,7 @@ void CheckVertexAttrib(const CheckContext& ctx, const Binding& b) {
       std::string_view key = weight ? "arbvp.max_vertex_units" : "arbvp.max_palette_matrices";
       if (!Supported(ctx, key)) {
         ctx.Report(
-            Diag::BindingUnsupported, b.range,
+            Diag::BindingUnsupported, b.item,
             fmt::format("'{}' needs {}, which profile '{}' does not support",
                         weight ? "vertex.weight" : "vertex.matrixindex", ext, EnforcedName(ctx)));
         return;
@@ -130,7 +130,7 @@ void CheckState(const CheckContext& ctx, const Binding& b) {
           return;
         case MatrixName::Palette:
           if (!Supported(ctx, "arbvp.max_palette_matrices")) {
-            ctx.Report(Diag::BindingUnsupported, b.range,
+            ctx.Report(Diag::BindingUnsupported, b.item,
                        fmt::format("'state.matrix.palette' needs ARB_matrix_palette, which "
                                    "profile '{}' does not support",
                                    EnforcedName(ctx)));

@@ -14,27 +14,88 @@ bool IsPosition(const Binding& b) {
   return b.kind == BindingKind::Result && b.result == ResultReg::Position;
 }
 
-// Components of the source register an operand reads, given the written mask it feeds.
-uint8_t ComponentsRead(const Instruction& inst, const SrcOperand& src) {
-  const OpcodeInfo& info = GetOpcodeInfo(inst.op);
+// The operand components (before swizzling) that instruction `inst` reads from source
+// `s`, as the instruction definitions use them (ARBvp 2.14.5, ARBfp 3.11.5 and 3.11.6).
+uint8_t OperandComponentsUsed(const Instruction& inst, size_t s) {
+  uint8_t mask = inst.dst.mask;
+  switch (inst.op) {
+    case Opcode::DP3:
+    case Opcode::XPD:
+      return 0x7;
+    case Opcode::DPH:
+      return s == 0 ? 0x7 : 0xF;
+    case Opcode::DP4:
+    case Opcode::KIL:
+      return 0xF;
+    case Opcode::DST:
+      return s == 0 ? 0x6 : 0xA;  // a.y, a.z; b.y, b.w
+    case Opcode::LIT:
+      return 0xB;  // x, y, w
+    case Opcode::TEX:
+    case Opcode::TXP:
+    case Opcode::TXB: {
+      uint8_t coords = 0;
+      switch (inst.target) {
+        case TexTarget::Tex1D:
+          coords = 0x1;
+          break;
+        case TexTarget::Tex2D:
+        case TexTarget::Rect:
+          coords = 0x3;
+          break;
+        case TexTarget::Tex3D:
+        case TexTarget::Cube:
+        case TexTarget::Shadow2D:
+        case TexTarget::ShadowRect:
+          coords = 0x7;
+          break;
+        case TexTarget::Shadow1D:
+          coords = 0x5;
+          break;
+      }
+      return inst.op == Opcode::TEX ? coords : static_cast<uint8_t>(coords | 0x8);
+    }
+    case Opcode::ABS:
+    case Opcode::ADD:
+    case Opcode::CMP:
+    case Opcode::FLR:
+    case Opcode::FRC:
+    case Opcode::LRP:
+    case Opcode::MAD:
+    case Opcode::MAX:
+    case Opcode::MIN:
+    case Opcode::MOV:
+    case Opcode::MUL:
+    case Opcode::SGE:
+    case Opcode::SLT:
+    case Opcode::SUB:
+    case Opcode::SWZ:
+      return mask;  // component-wise: only the written components are computed
+    case Opcode::ARL:
+    case Opcode::COS:
+    case Opcode::EX2:
+    case Opcode::EXP:
+    case Opcode::LG2:
+    case Opcode::LOG:
+    case Opcode::POW:
+    case Opcode::RCP:
+    case Opcode::RSQ:
+    case Opcode::SCS:
+    case Opcode::SIN:
+      return 0x1;  // scalar operands: the swizzle replicates one component
+  }
+  return 0xF;
+}
+
+// Components of the source register an operand reads.
+uint8_t ComponentsRead(const Instruction& inst, size_t s) {
+  const SrcOperand& src = inst.src[s];
+  uint8_t used = OperandComponentsUsed(inst, s);
   uint8_t read = 0;
-  auto add = [&](Swz s) {
-    if (s <= Swz::W) read = static_cast<uint8_t>(read | (1u << static_cast<unsigned>(s)));
-  };
-  switch (info.signature) {
-    case OpSignature::Scalar:
-    case OpSignature::BinSc:
-    case OpSignature::Arl:
-      add(src.swizzle[0]);
-      break;
-    case OpSignature::Vector:
-    case OpSignature::Binary:
-    case OpSignature::Ternary:
-    case OpSignature::Swz:
-    case OpSignature::Sample:
-    case OpSignature::Kil:
-      for (Swz s : src.swizzle) add(s);
-      break;
+  for (size_t c = 0; c < 4; ++c) {
+    if (!(used & (1u << c))) continue;
+    Swz sel = src.swizzle[c];
+    if (sel <= Swz::W) read = static_cast<uint8_t>(read | (1u << static_cast<unsigned>(sel)));
   }
   return read;
 }
@@ -55,6 +116,8 @@ void CheckOperands(const CheckContext& ctx) {
     }
   }
 
+  // After an error some statements are missing: data-flow warnings would only be echoes.
+  if (ctx.sink->error_count() > ctx.errors_before) return;
   std::vector<uint8_t> written(program.vars.size(), 0);
   std::vector<bool> warned(program.vars.size(), false);
   bool position_written = false;
@@ -65,7 +128,7 @@ void CheckOperands(const CheckContext& ctx) {
       const Variable& var = program.vars[static_cast<size_t>(src.var)];
       if (var.kind != VarKind::Temp || warned[static_cast<size_t>(src.var)]) continue;
       uint8_t missing =
-          static_cast<uint8_t>(ComponentsRead(inst, src) & ~written[static_cast<size_t>(src.var)]);
+          static_cast<uint8_t>(ComponentsRead(inst, s) & ~written[static_cast<size_t>(src.var)]);
       if (missing) {
         warned[static_cast<size_t>(src.var)] = true;
         std::string comps;

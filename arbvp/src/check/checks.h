@@ -18,6 +18,7 @@ struct CheckContext {
   // Explicit profile (--limits), or null for portability mode (spec-min warns, mesa errs).
   const compiler::LimitProfile* profile;
   Stats* stats;
+  int errors_before = 0;  // the sink's error count before this program
 
   bool vp() const { return program.kind == ProgramKind::Vertex; }
   compiler::Diagnostic* Report(Diag diag, Range range, std::string message) const {
