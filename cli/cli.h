@@ -25,6 +25,7 @@ Exit Worse(Exit a, Exit b);
 struct Input {
   std::string path;          // as given, or as found under a given directory; "-" is stdin
   std::string display_path;  // "<stdin>" for "-"
+  std::string error;         // set when the argument cannot give a program (empty directory)
 };
 
 // Expands files and directories (recursively, sorted, ARB program extensions only).

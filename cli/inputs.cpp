@@ -52,18 +52,22 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
         }
       }
       std::sort(found.begin(), found.end());
-      for (std::string& path : found) inputs.push_back({path, path});
+      if (found.empty()) {
+        inputs.push_back(
+            {arg, arg, "no program files (.vp .fp .arbvp .arbfp) under this directory"});
+      }
+      for (std::string& path : found) inputs.push_back({path, path, {}});
       continue;
     }
-    inputs.push_back({arg, arg == "-" ? "<stdin>" : arg});
+    inputs.push_back({arg, arg == "-" ? "<stdin>" : arg, {}});
   }
   return inputs;
 }
 
 std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::FileReport* report) {
   std::string bytes;
-  std::string error;
-  if (!compiler::ReadFileBytes(input.path, &bytes, &error)) {
+  std::string error = input.error;
+  if (!error.empty() || !compiler::ReadFileBytes(input.path, &bytes, &error)) {
     compiler::Diagnostic d;
     d.info = &kIoRead;
     d.severity = compiler::Severity::Error;
