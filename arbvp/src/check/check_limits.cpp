@@ -90,6 +90,47 @@ std::string CountKey(const Binding& b, ProgramKind kind) {
   return BindingName(b, kind);
 }
 
+// Counts a resource and reports it once at the first count past the spec minimum
+// (portability mode) and once at the first count past the enforced limit.
+class LimitCounter {
+ public:
+  LimitCounter(const CheckContext& ctx, std::string key, int reserve, Diag diag)
+      : ctx_(ctx), key_(std::move(key)), reserve_(reserve), diag_(diag) {}
+
+  void Add(Range range, const std::string& what) {
+    ++count_;
+    if (failed_) return;
+    const compiler::LimitProfile* enforced =
+        ctx_.profile ? ctx_.profile : compiler::BuiltinProfile("mesa");
+    bool over_error = count_ > enforced->Get(key_) - reserve_;
+    if (warned_ && !over_error) return;
+    size_t before = ctx_.sink->diagnostics().size();
+    failed_ = !CheckLimit(ctx_, key_, count_, reserve_, diag_, range, what, !warned_);
+    if (ctx_.sink->diagnostics().size() != before) warned_ = true;
+  }
+  int64_t count() const { return count_; }
+
+ private:
+  const CheckContext& ctx_;
+  std::string key_;
+  int reserve_;
+  Diag diag_;
+  int64_t count_ = 0;
+  bool warned_ = false;
+  bool failed_ = false;
+};
+
+// The variables some instruction indexes with an address register.
+std::set<int> RelativelyAddressed(const Program& program) {
+  std::set<int> vars;
+  for (const Instruction& inst : program.instructions) {
+    for (size_t s = 0; s < inst.src_count; ++s) {
+      if (inst.src[s].relative) vars.insert(inst.src[s].var);
+    }
+  }
+  return vars;
+}
+
 }  // namespace
 
 std::string CheckContext::StageKey(std::string_view name) const {
@@ -97,7 +138,7 @@ std::string CheckContext::StageKey(std::string_view name) const {
 }
 
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
-                Range range, std::string_view what) {
+                Range range, std::string_view what, bool allow_warning) {
   const compiler::LimitProfile* enforced =
       ctx.profile ? ctx.profile : compiler::BuiltinProfile("mesa");
   int64_t limit = enforced->Get(key) - reserve;
@@ -109,7 +150,7 @@ bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int
                            limit, enforced->name, reserve_note));
     return false;
   }
-  if (!ctx.profile) {
+  if (!ctx.profile && allow_warning) {
     int64_t minimum = compiler::BuiltinProfile("spec-min")->Get(key) - reserve;
     if (used > minimum) {
       ctx.Report(Diag::LimitPortability, range,
@@ -136,33 +177,17 @@ void CheckResources(const CheckContext& ctx) {
   stats.alu_instructions = alu;
   stats.tex_instructions = tex;
 
-  auto report_first_over = [&](std::string_view key, int reserve_n, Diag diag,
-                               auto counts_instruction, std::string_view what) {
-    const compiler::LimitProfile* enforced =
-        ctx.profile ? ctx.profile : compiler::BuiltinProfile("mesa");
-    int64_t error_limit = enforced->Get(key) - reserve_n;
-    int64_t warn_limit =
-        ctx.profile ? error_limit : compiler::BuiltinProfile("spec-min")->Get(key) - reserve_n;
-    int count = 0;
-    bool warned = false;
+  auto count_instructions = [&](std::string key, int reserve_n, Diag diag, auto counts,
+                                std::string_view what) {
+    LimitCounter counter(ctx, std::move(key), reserve_n, diag);
     for (const Instruction& inst : program.instructions) {
-      if (!counts_instruction(inst)) continue;
-      ++count;
-      if (count > error_limit) {
-        CheckLimit(ctx, key, count, reserve_n, diag, inst.opcode_range,
-                   fmt::format("{} {}", what, count));
-        return;
-      }
-      if (count > warn_limit && !warned) {
-        warned = true;
-        CheckLimit(ctx, key, count, reserve_n, diag, inst.opcode_range,
-                   fmt::format("{} {}", what, count));
-      }
+      if (counts(inst))
+        counter.Add(inst.opcode_range, fmt::format("{} {}", what, counter.count() + 1));
     }
   };
   auto any = [](const Instruction&) { return true; };
-  report_first_over(ctx.StageKey("max_instructions"), reserve.instructions, Diag::LimitInstructions,
-                    any, "instruction");
+  count_instructions(ctx.StageKey("max_instructions"), reserve.instructions,
+                     Diag::LimitInstructions, any, "instruction");
   if (!ctx.vp()) {
     auto is_alu = [](const Instruction& inst) {
       return GetOpcodeInfo(inst.op).klass == OpClass::Alu;
@@ -170,75 +195,58 @@ void CheckResources(const CheckContext& ctx) {
     auto is_tex = [](const Instruction& inst) {
       return GetOpcodeInfo(inst.op).klass == OpClass::Tex;
     };
-    report_first_over("arbfp.max_alu_instructions", reserve.instructions,
-                      Diag::LimitAluInstructions, is_alu, "ALU instruction");
-    report_first_over("arbfp.max_tex_instructions", 0, Diag::LimitTexInstructions, is_tex,
-                      "texture instruction");
+    count_instructions("arbfp.max_alu_instructions", reserve.instructions,
+                       Diag::LimitAluInstructions, is_alu, "ALU instruction");
+    count_instructions("arbfp.max_tex_instructions", 0, Diag::LimitTexInstructions, is_tex,
+                       "texture instruction");
     std::vector<size_t> starts;
     stats.tex_indirections = CountIndirections(program, &starts);
-    // Indirection k (k >= 2) starts at starts[k - 2]; report the first past each limit.
-    const compiler::LimitProfile* enforced =
-        ctx.profile ? ctx.profile : compiler::BuiltinProfile("mesa");
-    int64_t error_limit = enforced->Get("arbfp.max_tex_indirections");
-    int64_t warn_limit =
-        ctx.profile ? error_limit
-                    : compiler::BuiltinProfile("spec-min")->Get("arbfp.max_tex_indirections");
-    bool warned = false;
-    for (size_t k = 0; k < starts.size(); ++k) {
-      int64_t count = static_cast<int64_t>(k) + 2;
-      const Instruction& inst = program.instructions[starts[k]];
-      if (count > error_limit || (count > warn_limit && !warned)) {
-        warned = true;
-        CheckLimit(ctx, "arbfp.max_tex_indirections", count, 0, Diag::LimitTexIndirections,
-                   inst.opcode_range, fmt::format("texture indirection {}", count));
-        if (count > error_limit) break;
-      }
+    // Indirection k (k >= 2) starts at instruction starts[k - 2].
+    LimitCounter indirections(ctx, "arbfp.max_tex_indirections", 0, Diag::LimitTexIndirections);
+    indirections.Add(Range{}, "");  // the first indirection is free of any instruction
+    for (size_t start : starts) {
+      indirections.Add(program.instructions[start].opcode_range,
+                       fmt::format("texture indirection {}", indirections.count() + 1));
     }
   }
 
-  // Declared temporaries and address registers, attributes and parameters (distinct).
-  int temps = 0;
-  int addresses = 0;
-  std::set<std::string> attribs;
-  std::set<std::string> params;
+  // Declared temporaries and address registers; distinct attributes and parameters.
+  LimitCounter temps(ctx, ctx.StageKey("max_temporaries"), reserve.temporaries,
+                     Diag::LimitTemporaries);
+  LimitCounter addresses(ctx, "arbvp.max_address_registers", 0, Diag::LimitAddressRegisters);
+  LimitCounter attribs(ctx, ctx.StageKey("max_attribs"), reserve.attribs, Diag::LimitAttributes);
+  LimitCounter params(ctx, ctx.StageKey("max_parameters"), reserve.parameters,
+                      Diag::LimitParameters);
+  std::set<std::string> seen_attribs;
+  std::set<std::string> seen_params;
   std::set<std::string> outputs;
-  bool temps_over = false, address_over = false, attribs_over = false, params_over = false;
-  for (const Variable& var : program.vars) {
+  std::set<int> relative = RelativelyAddressed(program);
+  for (size_t v = 0; v < program.vars.size(); ++v) {
+    const Variable& var = program.vars[v];
     switch (var.kind) {
       case VarKind::Temp:
-        ++temps;
-        if (!temps_over) {
-          temps_over = !CheckLimit(ctx, ctx.StageKey("max_temporaries"), temps, reserve.temporaries,
-                                   Diag::LimitTemporaries, var.decl,
-                                   fmt::format("temporary '{}' (number {})", var.name, temps));
-        }
+        temps.Add(var.decl, fmt::format("temporary '{}' (number {})", var.name, temps.count() + 1));
         break;
       case VarKind::Address:
-        ++addresses;
-        if (!address_over) {
-          address_over = !CheckLimit(
-              ctx, "arbvp.max_address_registers", addresses, 0, Diag::LimitAddressRegisters,
-              var.decl, fmt::format("address register '{}' (number {})", var.name, addresses));
-        }
+        addresses.Add(var.decl, fmt::format("address register '{}' (number {})", var.name,
+                                            addresses.count() + 1));
         break;
       case VarKind::Attrib:
         for (const Binding& b : var.bindings) {
-          if (attribs.insert(BindingName(b, program.kind)).second && !attribs_over) {
-            attribs_over =
-                !CheckLimit(ctx, ctx.StageKey("max_attribs"), static_cast<int64_t>(attribs.size()),
-                            reserve.attribs, Diag::LimitAttributes, var.decl,
-                            fmt::format("attribute binding {} ('{}')", attribs.size(),
-                                        BindingName(b, program.kind)));
+          std::string name = BindingName(b, program.kind);
+          if (seen_attribs.insert(name).second) {
+            attribs.Add(var.decl,
+                        fmt::format("attribute binding {} ('{}')", attribs.count() + 1, name));
           }
         }
         break;
       case VarKind::Param:
         for (const Binding& b : var.bindings) {
-          if (params.insert(CountKey(b, program.kind)).second && !params_over) {
-            params_over = !CheckLimit(ctx, ctx.StageKey("max_parameters"),
-                                      static_cast<int64_t>(params.size()), reserve.parameters,
-                                      Diag::LimitParameters, var.decl,
-                                      fmt::format("parameter binding {}", params.size()));
+          // ARBvp 2.14.3.7: each constant of a relatively addressed array counts, even when
+          // identical to another; state vectors and other constants count once.
+          bool always = b.kind == BindingKind::Constant && relative.count(static_cast<int>(v));
+          if (seen_params.insert(CountKey(b, program.kind)).second || always) {
+            params.Add(var.decl, fmt::format("parameter binding {}", params.count() + 1));
           }
         }
         break;
@@ -247,10 +255,10 @@ void CheckResources(const CheckContext& ctx) {
         break;
     }
   }
-  stats.temporaries = temps;
-  stats.address_registers = addresses;
-  stats.attributes = static_cast<int>(attribs.size());
-  stats.parameters = static_cast<int>(params.size());
+  stats.temporaries = static_cast<int>(temps.count());
+  stats.address_registers = static_cast<int>(addresses.count());
+  stats.attributes = static_cast<int>(attribs.count());
+  stats.parameters = static_cast<int>(params.count());
   stats.outputs = static_cast<int>(outputs.size());
 }
 

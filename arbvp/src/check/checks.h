@@ -33,7 +33,7 @@ struct CheckContext {
 // over the enforced limit, or arb-limit-portability (warning) when only over spec-min in
 // portability mode. Returns false when an error was reported.
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
-                Range range, std::string_view what);
+                Range range, std::string_view what, bool allow_warning = true);
 
 void CheckProgramOptions(const CheckContext& ctx);  // check_options.cpp
 void CheckBindings(const CheckContext& ctx);        // check_bindings.cpp
