@@ -1,0 +1,8 @@
+!!ARBfp1.0
+# two fog options: ARB_fog_exp then ARB_fog_exp2 (ARBfp 3.11.4.5.1)
+# FAIL
+# EXPECT-ERROR: 6:8 arb-option-conflict
+OPTION ARB_fog_exp;
+OPTION ARB_fog_exp2;
+MOV result.color, fragment.color;
+END

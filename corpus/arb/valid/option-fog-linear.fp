@@ -1,0 +1,7 @@
+!!ARBfp1.0
+# OPTION ARB_fog_linear (ARBfp 3.11.4.5.1)
+OPTION ARB_fog_linear;
+TEMP base;
+TEX base, fragment.texcoord[0], texture[0], 2D;
+MUL result.color, base, fragment.color;
+END

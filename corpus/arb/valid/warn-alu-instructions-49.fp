@@ -1,0 +1,54 @@
+!!ARBfp1.0
+# forty-nine ALU instructions: beyond the minimum MAX_PROGRAM_ALU_INSTRUCTIONS_ARB of 48 (ARBfp 3.11.3.6)
+# EXPECT-WARNING: 53:1 arb-limit-portability
+TEMP acc;
+MOV acc, fragment.color;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MUL acc, acc, 1.5;
+MAD acc, acc, 0.5, 0.25;
+MOV result.color, acc;
+END

@@ -1,0 +1,55 @@
+!!ARBfp1.0
+# twenty-five distinct constant parameters: beyond the minimum MAX_PROGRAM_PARAMETERS_ARB of 24 (ARBfp 3.11.3.6)
+# EXPECT-WARNING: 28:7 arb-limit-portability
+PARAM c0 = { 0, 0, 0, 1 };
+PARAM c1 = { 1, 0, 0, 1 };
+PARAM c2 = { 2, 0, 0, 1 };
+PARAM c3 = { 3, 0, 0, 1 };
+PARAM c4 = { 4, 0, 0, 1 };
+PARAM c5 = { 5, 0, 0, 1 };
+PARAM c6 = { 6, 0, 0, 1 };
+PARAM c7 = { 7, 0, 0, 1 };
+PARAM c8 = { 8, 0, 0, 1 };
+PARAM c9 = { 9, 0, 0, 1 };
+PARAM c10 = { 10, 0, 0, 1 };
+PARAM c11 = { 11, 0, 0, 1 };
+PARAM c12 = { 12, 0, 0, 1 };
+PARAM c13 = { 13, 0, 0, 1 };
+PARAM c14 = { 14, 0, 0, 1 };
+PARAM c15 = { 15, 0, 0, 1 };
+PARAM c16 = { 16, 0, 0, 1 };
+PARAM c17 = { 17, 0, 0, 1 };
+PARAM c18 = { 18, 0, 0, 1 };
+PARAM c19 = { 19, 0, 0, 1 };
+PARAM c20 = { 20, 0, 0, 1 };
+PARAM c21 = { 21, 0, 0, 1 };
+PARAM c22 = { 22, 0, 0, 1 };
+PARAM c23 = { 23, 0, 0, 1 };
+PARAM c24 = { 24, 0, 0, 1 };
+TEMP acc;
+ADD acc, c0, c1;
+ADD acc, acc, c2;
+ADD acc, acc, c3;
+ADD acc, acc, c4;
+ADD acc, acc, c5;
+ADD acc, acc, c6;
+ADD acc, acc, c7;
+ADD acc, acc, c8;
+ADD acc, acc, c9;
+ADD acc, acc, c10;
+ADD acc, acc, c11;
+ADD acc, acc, c12;
+ADD acc, acc, c13;
+ADD acc, acc, c14;
+ADD acc, acc, c15;
+ADD acc, acc, c16;
+ADD acc, acc, c17;
+ADD acc, acc, c18;
+ADD acc, acc, c19;
+ADD acc, acc, c20;
+ADD acc, acc, c21;
+ADD acc, acc, c22;
+ADD acc, acc, c23;
+ADD acc, acc, c24;
+MUL result.color, acc, fragment.color;
+END
