@@ -25,6 +25,12 @@ using compiler::SourceFile;
 // Thrown after an error has been reported, to abandon the current statement.
 struct StatementError {};
 
+// Lets the symbol table be searched with a string_view (no allocation per lookup).
+struct StringHash {
+  using is_transparent = void;
+  size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+};
+
 struct Symbol {
   int var = -1;  // -1: poisoned (its declaration failed)
   Range decl;
@@ -89,6 +95,9 @@ class Parser {
     return fmt::format("'{}'", s);
   }
 
+  static std::string Quoted(std::string_view word) {
+    return word.empty() ? std::string() : fmt::format("'{}' ", word);
+  }
   [[noreturn]] void Fail(Diag diag, Range range, std::string message) {
     sink_->Report(Info(diag), &source_, range, std::move(message));
     throw StatementError{};
@@ -106,8 +115,18 @@ class Parser {
   }
   Token ExpectIdent(std::string_view what) { return Expect(Tok::Ident, what); }
   // Expects one of `words` (an identifier); reports the alternatives otherwise.
-  Token ExpectWord(const std::vector<std::string_view>& words, std::string_view context,
+  Token ExpectWord(std::initializer_list<std::string_view> word_list, std::string_view context,
                    Diag diag = Diag::BindingUnknown) {
+    const Token& t = Peek();
+    if (t.kind == Tok::Ident) {
+      for (std::string_view w : word_list) {
+        if (Text(t) == w) return Advance();
+      }
+    }
+    return ExpectWordSlow(std::vector<std::string_view>(word_list), context, diag);
+  }
+  Token ExpectWordSlow(const std::vector<std::string_view>& words, std::string_view context,
+                       Diag diag = Diag::BindingUnknown) {
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
       for (std::string_view w : words) {
@@ -133,7 +152,8 @@ class Parser {
       Fail(Diag::SyntaxExpected, RangeOf(Peek()),
            fmt::format("expected {} (an integer), found {}", what, Describe(Peek())));
     }
-    return Expect(Tok::Integer, fmt::format("{} (an integer)", what));
+    if (!PeekIs(Tok::Integer)) FailExpected(fmt::format("{} (an integer)", what));
+    return Advance();
   }
 
   // ---- program structure ---------------------------------------------------------------
@@ -199,15 +219,19 @@ class Parser {
 
   // Every statement ends with ';'. A missing one points just after the previous token; when
   // the next token begins a statement on a later line, parsing goes on from there.
-  void ExpectSemicolon(std::string_view what) {
+  // `what` names the statement ("ATTRIB statement"); `quoted`, when given, is put in
+  // quotes before it ("'MOV' instruction"). Messages are built only on failure.
+  void ExpectSemicolon(std::string_view what, std::string_view quoted = {}) {
     if (Accept(Tok::Semicolon)) return;
     const Token& next = Peek();
     if (next.kind == Tok::Comma) {
       Fail(Diag::SyntaxExpected, RangeOf(next),
-           fmt::format("expected ';' after the {}, found ',': too many operands", what));
+           fmt::format("expected ';' after the {}{}, found ',': too many operands", Quoted(quoted),
+                       what));
     }
-    Report(Diag::SyntaxMissingSemicolon, {last_end_, last_end_},
-           fmt::format("expected ';' after the {}, found {}", what, Describe(next)));
+    Report(
+        Diag::SyntaxMissingSemicolon, {last_end_, last_end_},
+        fmt::format("expected ';' after the {}{}, found {}", Quoted(quoted), what, Describe(next)));
     bool later_line = source_.Locate(next.begin).line > source_.Locate(last_end_).line;
     if ((later_line && StartsStatement(next)) || next.kind == Tok::Eof) return;
     throw StatementError{};
@@ -272,7 +296,7 @@ class Parser {
       Fail(Diag::SyntaxReservedName, RangeOf(name),
            fmt::format("'{}' is a reserved word and cannot name a variable", word));
     }
-    auto it = symbols_.find(std::string(word));
+    auto it = symbols_.find(word);
     if (it != symbols_.end()) {
       compiler::Diagnostic* d = sink_->Report(Info(Diag::DeclRedeclared), &source_, RangeOf(name),
                                               fmt::format("redeclaration of '{}'", word));
@@ -296,7 +320,7 @@ class Parser {
 
   // Looks up <establishedName>; reports undeclared names (with a suggestion).
   int ResolveName(const Token& name) {
-    auto it = symbols_.find(std::string(Text(name)));
+    auto it = symbols_.find(Text(name));
     if (it == symbols_.end()) {
       std::vector<std::string_view> names;
       for (const auto& [n, s] : symbols_) names.push_back(n);
@@ -389,7 +413,7 @@ class Parser {
         AddVariable(std::move(var), &name);
       }
     } while (Accept(Tok::Comma));
-    ExpectSemicolon(fmt::format("{} statement", Text(keyword)));
+    ExpectSemicolon("statement", Text(keyword));
   }
 
   // <ALIAS_statement> ::= "ALIAS" <establishName> "=" <establishedName>
@@ -399,7 +423,7 @@ class Parser {
     bool fresh = ParseEstablishName(&name);
     Expect(Tok::Equals, "'=' after the alias name");
     Token target = ExpectIdent("the name of a declared variable");
-    auto it = symbols_.find(std::string(Text(target)));
+    auto it = symbols_.find(Text(target));
     if (it == symbols_.end()) {
       if (fresh) Poison(name);
       Fail(Diag::DeclAliasUndeclared, RangeOf(target),
@@ -559,9 +583,11 @@ class Parser {
 
   // Parses "[" <integer> "]" and returns the integer token.
   Token ParseBracketIndex(std::string_view what) {
-    Expect(Tok::LBracket, fmt::format("'[' and {}", what));
+    if (!PeekIs(Tok::LBracket)) FailExpected(fmt::format("'[' and {}", what));
+    Advance();
     Token n = ExpectInteger(what);
-    Expect(Tok::RBracket, fmt::format("']' after {}", what));
+    if (!PeekIs(Tok::RBracket)) FailExpected(fmt::format("']' after {}", what));
+    Advance();
     return n;
   }
   // An optional "[" n "]": sets index/selector/indexed on the binding.
@@ -611,7 +637,10 @@ class Parser {
          fmt::format("unknown {} '{}'; expected {}{}", what, Text(t), JoinAlternatives(words),
                      hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint)));
   }
-  void ExpectDot(std::string_view after) { Expect(Tok::Dot, fmt::format("'.' after '{}'", after)); }
+  void ExpectDot(std::string_view after) {
+    if (!PeekIs(Tok::Dot)) FailExpected(fmt::format("'.' after '{}'", after));
+    Advance();
+  }
 
   // ---- bindings ------------------------------------------------------------------------
 
@@ -828,7 +857,7 @@ class Parser {
              fmt::format("'state.{}' is available only in vertex programs", w));
       }
     }
-    Token item = ExpectWord(items, "state binding");
+    Token item = ExpectWordSlow(items, "state binding", Diag::BindingUnknown);
     std::string_view w = Text(item);
     Binding b;
     b.kind = BindingKind::State;
@@ -1113,7 +1142,7 @@ class Parser {
     }
     inst.range = {op_token.begin, last_end_};
     program_->instructions.push_back(inst);
-    ExpectSemicolon(fmt::format("'{}' instruction", info.name));
+    ExpectSemicolon("instruction", info.name);
   }
 
   [[noreturn]] void ReportUnknownStatement(const Token& t) {
@@ -1126,7 +1155,7 @@ class Parser {
       names.push_back(k);
     }
     if (vp()) names.push_back("ADDRESS");
-    if (symbols_.count(std::string(word))) {
+    if (symbols_.count(word)) {
       Fail(Diag::SyntaxUnknownOpcode, RangeOf(t),
            fmt::format("expected an instruction or a declaration, found the variable '{}'", word));
     }
@@ -1348,8 +1377,7 @@ class Parser {
         Fail(Diag::OperandSrcWriteOnly, RangeOf(start),
              "cannot read a result register: results are write-only");
       }
-      if (!symbols_.count(std::string(w)) && PeekIs(Tok::Dot, 1) &&
-          (w == "vertex" || w == "fragment")) {
+      if (!symbols_.count(w) && PeekIs(Tok::Dot, 1) && (w == "vertex" || w == "fragment")) {
         Fail(Diag::BindingStage, RangeOf(t),
              fmt::format("'{}.*' bindings exist only in {} programs", w,
                          w == "vertex" ? "vertex" : "fragment"));
@@ -1628,7 +1656,7 @@ class Parser {
   size_t pos_ = 0;
   uint32_t last_end_ = 0;
   std::unique_ptr<Program> program_;
-  std::unordered_map<std::string, Symbol> symbols_;
+  std::unordered_map<std::string, Symbol, StringHash, std::equal_to<>> symbols_;
 };
 
 }  // namespace
