@@ -171,7 +171,10 @@ class Parser {
       if (t.kind == Tok::Ident && Text(t) == "END") {
         program_->end = RangeOf(Advance());
         if (!PeekIs(Tok::Eof)) {
-          Report(Diag::SyntaxAfterEnd, RangeOf(Peek()), "text after 'END' is ignored");
+          Report(Diag::SyntaxAfterEnd, RangeOf(Peek()),
+                 fmt::format("unexpected {} after 'END': END must be the last token of the program "
+                             "(comments may follow)",
+                             Describe(Peek())));
         }
         return;
       }
