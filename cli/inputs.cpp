@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include "cli.h"
@@ -14,9 +15,16 @@ namespace {
 const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
 
-bool IsProgramExtension(const std::filesystem::path& path) {
+// ARB program files found in directories: .vp .fp .arbvp .arbfp, and .txt files that start
+// with an ARB header (formats.md).
+bool IsProgramFile(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
-  return ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp";
+  if (ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp") return true;
+  if (ext != ".txt") return false;
+  char head[5] = {};
+  std::ifstream in(path, std::ios::binary);
+  in.read(head, sizeof head);
+  return in.gcount() == 5 && std::string_view(head, 5) == "!!ARB";
 }
 
 }  // namespace
@@ -47,14 +55,15 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
       auto options = std::filesystem::directory_options::skip_permission_denied;
       for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
            !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-        if (it->is_regular_file(ec) && IsProgramExtension(it->path())) {
+        if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
           found.push_back(it->path().generic_string());
         }
       }
       std::sort(found.begin(), found.end());
       if (found.empty()) {
-        inputs.push_back(
-            {arg, arg, "no program files (.vp .fp .arbvp .arbfp) under this directory"});
+        inputs.push_back({arg, arg,
+                          "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
+                          "this directory"});
       }
       for (std::string& path : found) inputs.push_back({path, path, {}});
       continue;
