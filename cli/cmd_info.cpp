@@ -47,8 +47,13 @@ std::string ToText(const std::string& path, const arbvp::Reflection& r) {
   std::string out = fmt::format("{}: {} program\n", path, r.kind);
   if (!r.options.empty()) out += fmt::format("  options: {}\n", fmt::join(r.options, ", "));
   const arbvp::Stats& s = r.stats;
-  out += fmt::format("  instructions: {} (ALU {}, TEX {}), texture indirections: {}\n",
-                     s.instructions, s.alu_instructions, s.tex_instructions, s.tex_indirections);
+  if (r.kind == "fragment") {
+    out += fmt::format("  instructions: {} (ALU {}, TEX {}), texture indirections: {}\n",
+                       s.instructions, s.alu_instructions, s.tex_instructions, s.tex_indirections);
+  } else {
+    out += fmt::format("  instructions: {}\n", s.instructions);
+  }
+
   out += fmt::format(
       "  temporaries: {}, parameters: {}, attributes: {}, address registers: {}, outputs: {}\n",
       s.temporaries, s.parameters, s.attributes, s.address_registers, s.outputs);
@@ -78,6 +83,11 @@ std::string ToText(const std::string& path, const arbvp::Reflection& r) {
 }  // namespace
 
 int RunInfo(const CommonOptions& options) {
+  if (options.format == "sarif") {
+    std::fputs("arbiter: error: info prints text or json; sarif is for diagnostics (check)\n",
+               stderr);
+    return static_cast<int>(Exit::Usage);
+  }
   std::optional<compiler::LimitProfile> profile;
   std::optional<arbvp::ProgramKind> stage;
   if (!ResolveLimits(options, &profile) || !ResolveStage(options, &stage)) {
