@@ -621,9 +621,11 @@ class Parser {
     }
     return false;
   }
-  // True for a word made of 1 to 4 component letters (a swizzle or mask, valid or not).
+  // True for a word that is meant as a swizzle or mask, valid or not: only component letters,
+  // or at most four characters ("xyzq"). Longer words are misspelt binding words.
   static bool LooksLikeSwizzle(std::string_view w) {
-    if (w.empty() || w.size() > 4) return false;
+    if (w.empty()) return false;
+    if (w.size() <= 4) return true;
     for (char c : w) {
       if (std::string_view("xyzwrgba").find(c) == std::string_view::npos) return false;
     }
@@ -1546,7 +1548,7 @@ class Parser {
            "SWZ takes a register without sign; negate components in the extended swizzle "
            "('-x')");
     }
-    SrcOperand src = ParseSrcReg(/*allow_constant=*/false);
+    SrcOperand src = ParseSrcReg(/*allow_constant=*/true);
     src.range = {begin, last_end_};
     if (PeekIs(Tok::Dot)) {
       Fail(Diag::OperandExtSwizzle, RangeOf(Peek()),

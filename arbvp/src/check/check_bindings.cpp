@@ -190,9 +190,45 @@ int AliasedGeneric(const Binding& b) {
   return -1;
 }
 
+// ARBvp 2.14.3.2: "A vertex program will fail to load if any GL state vector is bound
+// multiple times in a single array accessed using relative addressing or bound once in two
+// or more arrays accessed using relative addressing."
+void CheckRelativeArrayState(const CheckContext& ctx) {
+  std::map<std::string, const Binding*> first;
+  for (int v : RelativelyAddressed(ctx.program)) {
+    const Variable& var = ctx.program.vars[static_cast<size_t>(v)];
+    for (const Binding& b : var.bindings) {
+      if (b.kind != BindingKind::State && b.kind != BindingKind::ProgramEnv &&
+          b.kind != BindingKind::ProgramLocal) {
+        continue;
+      }
+      std::string name = BindingName(b, ctx.program.kind);
+      auto [it, fresh] = first.emplace(name, &b);
+      if (fresh) continue;
+      compiler::Diagnostic* d = ctx.Report(
+          Diag::ParamRelativeState, b.range,
+          fmt::format("'{}' is bound again in an array accessed with relative addressing; such "
+                      "arrays may bind each state vector only once, in one array",
+                      name));
+      if (d) d->notes.push_back({&ctx.source, it->second->range, "first bound here"});
+    }
+  }
+}
+
 }  // namespace
 
+std::set<int> RelativelyAddressed(const Program& program) {
+  std::set<int> vars;
+  for (const Instruction& inst : program.instructions) {
+    for (size_t s = 0; s < inst.src_count; ++s) {
+      if (inst.src[s].relative) vars.insert(inst.src[s].var);
+    }
+  }
+  return vars;
+}
+
 void CheckBindings(const CheckContext& ctx) {
+  CheckRelativeArrayState(ctx);
   // First binding of each generic slot, by conventional (0) and generic (1) spelling.
   std::map<int, const Binding*> seen[2];
   for (const Variable& var : ctx.program.vars) {

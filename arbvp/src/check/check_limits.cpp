@@ -120,17 +120,6 @@ class LimitCounter {
   bool failed_ = false;
 };
 
-// The variables some instruction indexes with an address register.
-std::set<int> RelativelyAddressed(const Program& program) {
-  std::set<int> vars;
-  for (const Instruction& inst : program.instructions) {
-    for (size_t s = 0; s < inst.src_count; ++s) {
-      if (inst.src[s].relative) vars.insert(inst.src[s].var);
-    }
-  }
-  return vars;
-}
-
 }  // namespace
 
 std::string CheckContext::StageKey(std::string_view name) const {

@@ -1,6 +1,7 @@
 // The semantic check families, run in a fixed order by checker.cpp.
 #pragma once
 
+#include <set>
 #include <string_view>
 
 #include "../diag.h"
@@ -34,6 +35,9 @@ struct CheckContext {
 // portability mode. Returns false when an error was reported.
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
                 Range range, std::string_view what, bool allow_warning = true);
+
+// The variables some instruction indexes with an address register.
+std::set<int> RelativelyAddressed(const Program& program);
 
 void CheckProgramOptions(const CheckContext& ctx);  // check_options.cpp
 void CheckBindings(const CheckContext& ctx);        // check_bindings.cpp
