@@ -12,6 +12,7 @@
 #include "arbiter/compiler/limits.h"
 #include "arbiter/compiler/render.h"
 #include "arbiter/compiler/source.h"
+#include "arbiter/glsl/check.h"
 
 namespace arbiter::cli {
 
@@ -50,8 +51,10 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);
 
 // Resolves --limits; on error prints it and returns false.
 bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitProfile>* out);
-// Resolves --stage for ARB inputs (arbvp/arbfp); GLSL stages are rejected for now.
+// Resolves --stage for ARB inputs (arbvp/arbfp; nothing for vert/frag).
 bool ResolveStage(const CommonOptions& options, std::optional<arbvp::ProgramKind>* out);
+// The GLSL stage of an input: --stage vert/frag, else its extension; nullopt for ARB.
+std::optional<glsl::Stage> GlslStage(const CommonOptions& options, const Input& input);
 
 // Prints the reports in the chosen format (text to stderr, json/sarif to stdout).
 void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options);

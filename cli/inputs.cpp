@@ -15,11 +15,12 @@ namespace {
 const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
 
-// ARB program files found in directories: .vp .fp .arbvp .arbfp, and .txt files that start
-// with an ARB header (formats.md).
+// Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
+// ARB header (formats.md), and GLSL .vert .vs .frag .fs.
 bool IsProgramFile(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   if (ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp") return true;
+  if (ext == ".vert" || ext == ".vs" || ext == ".frag" || ext == ".fs") return true;
   if (ext != ".txt") return false;
   char head[5] = {};
   std::ifstream in(path, std::ios::binary);
@@ -120,19 +121,16 @@ bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitPr
 }
 
 bool ResolveStage(const CommonOptions& options, std::optional<arbvp::ProgramKind>* out) {
-  if (options.stage.empty()) return true;
-  if (options.stage == "arbvp") {
-    *out = arbvp::ProgramKind::Vertex;
-  } else if (options.stage == "arbfp") {
-    *out = arbvp::ProgramKind::Fragment;
-  } else {
-    fmt::print(stderr,
-               "arbiter: error: --stage {}: GLSL checking is not available in this "
-               "build yet\n",
-               options.stage);
-    return false;
-  }
+  if (options.stage == "arbvp") *out = arbvp::ProgramKind::Vertex;
+  if (options.stage == "arbfp") *out = arbvp::ProgramKind::Fragment;
   return true;
+}
+
+std::optional<glsl::Stage> GlslStage(const CommonOptions& options, const Input& input) {
+  if (options.stage == "vert") return glsl::Stage::Vertex;
+  if (options.stage == "frag") return glsl::Stage::Fragment;
+  if (!options.stage.empty()) return std::nullopt;  // --stage arbvp/arbfp
+  return glsl::StageFromPath(input.path);
 }
 
 }  // namespace arbiter::cli

@@ -16,7 +16,7 @@ import shlex
 import subprocess
 import sys
 
-EXTS = (".vp", ".fp", ".arbvp", ".arbfp", ".args")
+EXTS = (".vp", ".fp", ".arbvp", ".arbfp", ".vert", ".frag", ".args")
 
 
 def expected_text(code, out, err):

@@ -1,0 +1,90 @@
+// CheckShader: glslang compile and link of one GLSL 1.10 shader, its info log turned into
+// arbiter diagnostics, then arbiter's own 1.10 rules.
+#include "arbiter/glsl/check.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <mutex>
+#include <string>
+
+#include "diag.h"
+#include "info_log.h"
+#include "strict/strict.h"
+
+namespace arbiter::glsl {
+namespace {
+
+std::once_flag g_glslang_initialised;
+
+void EnsureGlslang() {
+  std::call_once(g_glslang_initialised, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage Language(Stage stage) {
+  return stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
+}
+
+// Every error, not only the first (platform.md: EShMsgCascadingErrors).
+constexpr auto kMessages = static_cast<EShMessages>(EShMsgCascadingErrors);
+
+}  // namespace
+
+std::optional<Stage> StageFromPath(std::string_view path) {
+  auto dot = path.rfind('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  std::string_view ext = path.substr(dot);
+  if (ext == ".vert" || ext == ".vs") return Stage::Vertex;
+  if (ext == ".frag" || ext == ".fs") return Stage::Fragment;
+  return std::nullopt;
+}
+
+CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFile*>& sources,
+                        const CheckOptions& options, compiler::DiagnosticSink* sink) {
+  EnsureGlslang();
+  CheckResult result;
+  int errors_before = sink->error_count() + sink->dropped();
+  if (sources.empty()) return result;
+
+  std::vector<const char*> strings;
+  std::vector<int> lengths;
+  std::vector<const char*> names;
+  for (const compiler::SourceFile* file : sources) {
+    strings.push_back(file->text().data());
+    lengths.push_back(static_cast<int>(file->text().size()));
+    names.push_back(file->path().c_str());
+  }
+  glslang::TShader shader(Language(stage));
+  shader.setStringsWithLengthsAndNames(strings.data(), lengths.data(), names.data(),
+                                       static_cast<int>(strings.size()));
+  // A shader without #version is 1.10 desktop (the default version matters: without it
+  // glslang takes such a shader as ES 1.00).
+  bool compiled = shader.parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);
+  ReportInfoLog(shader.getInfoLog(), sources, /*link=*/false, sink);
+
+  bool linked = false;
+  glslang::TProgram program;
+  if (compiled && options.link) {
+    program.addShader(&shader);
+    linked = program.link(kMessages);
+    ReportInfoLog(program.getInfoLog(), sources, /*link=*/true, sink);
+  }
+  if (compiled) {
+    StrictContext ctx{stage,
+                      sources,
+                      sink,
+                      *shader.getIntermediate(),
+                      options.link && linked,
+                      options.link_as_program};
+    RunStrictChecks(ctx);
+  }
+  if (!compiled && sink->error_count() + sink->dropped() == errors_before) {
+    // glslang refused the shader without saying why: never report success.
+    sink->Report(Info(Diag::InternalError), sources.front(), {0, 0},
+                 "glslang rejected the shader without a message");
+  }
+  result.ok = sink->error_count() + sink->dropped() == errors_before;
+  return result;
+}
+
+}  // namespace arbiter::glsl

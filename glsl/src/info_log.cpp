@@ -1,0 +1,254 @@
+// glslang's info log -> arbiter diagnostics. glslang 12 writes
+//   ERROR: <name>:<line>: '<token>' : <text>
+//   ERROR: Linking <stage> stage: <text>
+// (continuation lines indented), without columns: the column comes from the quoted token,
+// found on its line.
+#include "info_log.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <string>
+#include <string_view>
+
+#include "diag.h"
+
+namespace arbiter::glsl {
+namespace {
+
+using compiler::SourceFile;
+
+// Which code a glslang message gets: the first rule whose text occurs in the message.
+struct MessageRule {
+  std::string_view needle;
+  Diag diag;
+};
+
+constexpr MessageRule kCompileRules[] = {
+    {"syntax error", Diag::SyntaxError},
+    {"undeclared identifier", Diag::Undeclared},
+    {"redefinition", Diag::Redefinition},
+    {"eserved word", Diag::ReservedWord},
+    {"reserved for future use", Diag::ReservedWord},
+    {"cannot convert", Diag::TypeMismatch},
+    {"wrong operand types", Diag::TypeMismatch},
+    {"no matching overloaded function", Diag::NoMatchingFunction},
+    {"constructor", Diag::Constructor},
+    {"l-value", Diag::LValue},
+    {"not supported for this version", Diag::Version},
+    {"#version", Diag::Version},
+    {"version", Diag::Version},
+    {"qualifier", Diag::Qualifier},
+    {"array", Diag::ArraySize},
+    {"#", Diag::Preprocessor},
+    {"macro", Diag::Preprocessor},
+    {"preprocessor", Diag::Preprocessor},
+};
+
+constexpr MessageRule kLinkRules[] = {
+    {"Missing entry point", Diag::LinkMissingMain},
+    {"No function definition", Diag::LinkMissingFunction},
+    {"Recursion detected", Diag::LinkRecursion},
+    {"recursion", Diag::LinkRecursion},
+    {"gl_FragColor and gl_FragData", Diag::LinkFragColorAndData},
+};
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+// glslang spells types with storage prefixes and stray blanks (' const int', ' temp float').
+std::string CleanText(std::string_view text) {
+  std::string out(Trim(text));
+  // Only opening quotes are followed by a blank: " ' temp float'" -> " 'float'".
+  for (std::string_view noise : {" ' temp ", " ' const ", " ' uniform ", " ' in ", " ' "}) {
+    std::string replacement = noise == " ' const " ? " 'const " : " '";
+    for (size_t at = out.find(noise); at != std::string::npos;
+         at = out.find(noise, at + replacement.size())) {
+      out.replace(at, noise.size(), replacement);
+    }
+  }
+  std::string collapsed;
+  for (char c : out) {
+    if (c == ' ' && !collapsed.empty() && collapsed.back() == ' ') continue;
+    collapsed += c;
+  }
+  return collapsed;
+}
+
+bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The byte range of `token` on 1-based `line` of `file` (a whole-word match for identifiers);
+// the start of the line when it is not there.
+compiler::Range FindOnLine(const SourceFile& file, uint32_t line, std::string_view token) {
+  if (line < 1 || line > file.line_count()) return {0, 0};
+  uint32_t start = file.LineStart(line);
+  std::string_view text = file.LineText(line);
+  bool word = !token.empty() && IsIdentChar(token.front()) && IsIdentChar(token.back());
+  for (size_t at = token.empty() ? std::string_view::npos : text.find(token);
+       at != std::string_view::npos; at = text.find(token, at + 1)) {
+    bool before_ok = at == 0 || !IsIdentChar(text[at - 1]);
+    bool after_ok = at + token.size() >= text.size() || !IsIdentChar(text[at + token.size()]);
+    if (!word || (before_ok && after_ok)) {
+      auto begin = static_cast<uint32_t>(start + at);
+      return {begin, static_cast<uint32_t>(begin + token.size())};
+    }
+  }
+  return {start, start};
+}
+
+// The 'f' of a float literal like 1.0f on `line` (glslang names it "floating-point suffix").
+compiler::Range FindFloatSuffix(const SourceFile& file, uint32_t line) {
+  if (line < 1 || line > file.line_count()) return {0, 0};
+  uint32_t start = file.LineStart(line);
+  std::string_view text = file.LineText(line);
+  for (size_t i = 1; i < text.size(); ++i) {
+    bool suffix = text[i] == 'f' || text[i] == 'F';
+    bool after_number = std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.';
+    bool ends = i + 1 >= text.size() || !IsIdentChar(text[i + 1]);
+    size_t j = i;
+    while (j > 0 && (IsIdentChar(text[j - 1]) || text[j - 1] == '.')) --j;
+    bool starts_numeric = std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.';
+    if (suffix && after_number && ends && starts_numeric) {
+      return {static_cast<uint32_t>(start + i), static_cast<uint32_t>(start + i + 1)};
+    }
+  }
+  return {start, start};
+}
+
+// The first whole-word occurrence of `token` in any source (for link messages).
+bool FindAnywhere(const std::vector<const SourceFile*>& sources, std::string_view token,
+                  const SourceFile** file, compiler::Range* range) {
+  for (const SourceFile* f : sources) {
+    for (uint32_t line = 1; line <= f->line_count(); ++line) {
+      compiler::Range r = FindOnLine(*f, line, token);
+      if (r.end > r.begin) {
+        *file = f;
+        *range = r;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+Diag Classify(std::string_view text, bool link, bool warning) {
+  if (link) {
+    for (const MessageRule& rule : kLinkRules) {
+      if (text.find(rule.needle) != std::string_view::npos) return rule.diag;
+    }
+    return Diag::LinkError;
+  }
+  if (warning) return Diag::CompileWarning;
+  for (const MessageRule& rule : kCompileRules) {
+    if (text.find(rule.needle) != std::string_view::npos) return rule.diag;
+  }
+  return Diag::CompileError;
+}
+
+struct Message {
+  bool warning = false;
+  std::string body;  // after "ERROR: ", continuation lines appended
+};
+
+void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool link,
+          compiler::DiagnosticSink* sink) {
+  std::string_view body = m.body;
+  // Summary lines ("3 compilation errors.  No code generated.") repeat what came before.
+  if (body.find("compilation errors") != std::string_view::npos ||
+      body.find("compilation error.") != std::string_view::npos) {
+    return;
+  }
+  const SourceFile* file = sources.front();
+  uint32_t line = 0;
+  for (const SourceFile* f : sources) {
+    std::string_view name = f->path();
+    if (body.size() > name.size() + 1 && body.substr(0, name.size()) == name &&
+        body[name.size()] == ':') {
+      size_t digits = name.size() + 1;
+      size_t end = digits;
+      while (end < body.size() && std::isdigit(static_cast<unsigned char>(body[end]))) ++end;
+      if (end > digits && end < body.size() && body[end] == ':') {
+        file = f;
+        line = static_cast<uint32_t>(std::stoul(std::string(body.substr(digits, end - digits))));
+        body = Trim(body.substr(end + 1));
+      }
+      break;
+    }
+  }
+  constexpr std::string_view kLinking = "Linking ";
+  if (body.substr(0, kLinking.size()) == kLinking) {
+    size_t colon = body.find(':');
+    if (colon != std::string_view::npos) body = Trim(body.substr(colon + 1));
+  }
+  // "'token' : text"
+  std::string token;
+  std::string text(body);
+  if (body.size() > 2 && body.front() == '\'') {
+    size_t close = body.find("' :");
+    if (close != std::string_view::npos) {
+      token = std::string(body.substr(1, close - 1));
+      text = std::string(Trim(body.substr(close + 3)));
+    }
+  }
+  Diag diag = Classify(body, link, m.warning);
+  std::string message = CleanText(text);
+  // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
+  if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
+      std::islower(static_cast<unsigned char>(message[1]))) {
+    message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
+  }
+  if (!token.empty()) message += fmt::format(" ('{}')", token);
+
+  compiler::Range range{0, 0};
+  if (line > 0 && token == "floating-point suffix") {
+    range = FindFloatSuffix(*file, line);
+  } else if (line > 0) {
+    range = FindOnLine(*file, line, token);
+  } else if (link) {
+    // Place a link message at the construct it is about.
+    std::string_view needle;
+    if (diag == Diag::LinkFragColorAndData) needle = "gl_FragData";
+    if (diag == Diag::LinkMissingFunction || diag == Diag::LinkRecursion) {
+      // glslang names the function on the continuation: "f(" or "f(i1;".
+      size_t colon = text.rfind(':');
+      std::string_view tail =
+          Trim(std::string_view(text).substr(colon == std::string::npos ? 0 : colon + 1));
+      size_t paren = tail.find('(');
+      if (paren != std::string_view::npos) needle = tail.substr(0, paren);
+    }
+    if (!needle.empty()) FindAnywhere(sources, needle, &file, &range);
+  }
+  compiler::Severity severity = m.warning ? compiler::Severity::Warning : compiler::Severity::Error;
+  sink->Report(Info(diag), severity, file, range, message);
+}
+
+}  // namespace
+
+void ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources, bool link,
+                   compiler::DiagnosticSink* sink) {
+  if (log == nullptr || sources.empty()) return;
+  std::string_view rest(log);
+  Message current;
+  bool have = false;
+  while (!rest.empty()) {
+    size_t nl = rest.find('\n');
+    std::string_view line = rest.substr(0, nl);
+    rest = nl == std::string_view::npos ? std::string_view() : rest.substr(nl + 1);
+    bool error = line.substr(0, 7) == "ERROR: ";
+    bool warning = line.substr(0, 9) == "WARNING: ";
+    if (error || warning) {
+      if (have) Emit(current, sources, link, sink);
+      current = Message{warning, std::string(line.substr(error ? 7 : 9))};
+      have = true;
+    } else if (have && !Trim(line).empty()) {
+      current.body += " ";
+      current.body += Trim(line);
+    }
+  }
+  if (have) Emit(current, sources, link, sink);
+}
+
+}  // namespace arbiter::glsl

@@ -1,0 +1,8 @@
+// Runs the strictness checks in chapter order.
+#include "strict.h"
+
+namespace arbiter::glsl {
+
+void RunStrictChecks(const StrictContext& ctx) { CheckBuiltinVariables(ctx); }
+
+}  // namespace arbiter::glsl

@@ -1,0 +1,34 @@
+// The GLSL 1.10 strictness layer: rules of the specification that glslang 12 does not
+// enforce, one file per chapter (strict_<chapter>.cpp), run in a fixed order.
+#pragma once
+
+#include <vector>
+
+#include "../diag.h"
+#include "arbiter/compiler/diagnostic.h"
+#include "arbiter/compiler/source.h"
+#include "arbiter/glsl/check.h"
+
+namespace glslang {
+class TIntermediate;
+}
+
+namespace arbiter::glsl {
+
+struct StrictContext {
+  Stage stage;
+  const std::vector<const compiler::SourceFile*>& sources;
+  compiler::DiagnosticSink* sink;
+  const glslang::TIntermediate& ast;  // the compiled shader
+  bool linked;                        // the link step ran and succeeded
+  bool as_program;                    // CheckOptions::link_as_program
+};
+
+// Chapter 7, built-in variables: a vertex shader must write gl_Position (checked when
+// linking, as drivers do).
+void CheckBuiltinVariables(const StrictContext& ctx);  // strict_builtins.cpp
+
+// Runs every chapter's checks.
+void RunStrictChecks(const StrictContext& ctx);
+
+}  // namespace arbiter::glsl

@@ -1,0 +1,2 @@
+// ARGS: --stage frag
+uniform vec4 tint;

@@ -1,0 +1,3 @@
+void main() {
+  vec4 c = gl_Color;
+}
