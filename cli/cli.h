@@ -45,8 +45,12 @@ struct CommonOptions {
   bool werror = false;
   std::string limits;
   std::string stage;
+  int jobs = 0;  // -j: worker threads; 0 = the number of cores
   std::vector<std::string> files;
 };
+
+// The number of worker threads -j asks for (0: one per core).
+size_t ResolveJobs(const CommonOptions& options);
 void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);
 
 // Resolves --limits; on error prints it and returns false.

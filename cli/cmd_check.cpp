@@ -1,10 +1,72 @@
 // arbiter check: validate every input (ARB programs and GLSL shaders) and report its
-// diagnostics.
+// diagnostics, in input order whatever the number of worker threads.
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
 #include "arbiter/arbvp/check.h"
 #include "arbiter/glsl/check.h"
 #include "cli.h"
 
 namespace arbiter::cli {
+namespace {
+
+// One input's outcome; `source` stays alive until rendering (diagnostics point into it).
+struct Checked {
+  compiler::FileReport report;
+  std::unique_ptr<compiler::SourceFile> source;
+  Exit exit = Exit::Ok;
+};
+
+Checked CheckOne(const Input& input, const CommonOptions& options,
+                 const arbvp::CheckOptions& arb_options) {
+  Checked out;
+  out.report.path = input.display_path;
+  out.source = ReadInput(input, &out.report);
+  if (!out.source) {
+    out.exit = Exit::Environment;
+    return out;
+  }
+  compiler::DiagnosticSink sink(options.error_limit);
+  if (std::optional<glsl::Stage> stage = GlslStage(options, input)) {
+    glsl::CheckShader(*stage, {out.source.get()}, glsl::CheckOptions{}, &sink);
+  } else {
+    arbvp::CheckProgram(*out.source, arb_options, &sink);
+  }
+  if (options.werror) sink.PromoteWarnings();
+  if (sink.error_count() > 0) out.exit = Exit::Rejected;
+  out.report.diagnostics = std::move(sink.diagnostics());
+  out.report.dropped_errors = sink.dropped();
+  return out;
+}
+
+// With --stage vert|frag the files are the strings of one shader, in order.
+Checked CheckOneShader(const std::vector<Input>& inputs, const CommonOptions& options,
+                       std::vector<std::unique_ptr<compiler::SourceFile>>* keep) {
+  Checked out;
+  std::vector<const compiler::SourceFile*> strings;
+  for (const Input& input : inputs) {
+    std::unique_ptr<compiler::SourceFile> source = ReadInput(input, &out.report);
+    if (!source) {
+      out.exit = Exit::Environment;
+      continue;
+    }
+    strings.push_back(source.get());
+    keep->push_back(std::move(source));
+  }
+  out.report.path = inputs.empty() ? "" : inputs.front().display_path;
+  if (strings.size() != inputs.size()) return out;
+  compiler::DiagnosticSink sink(options.error_limit);
+  glsl::CheckShader(options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment, strings,
+                    glsl::CheckOptions{}, &sink);
+  if (options.werror) sink.PromoteWarnings();
+  if (sink.error_count() > 0) out.exit = Exit::Rejected;
+  out.report.diagnostics = std::move(sink.diagnostics());
+  out.report.dropped_errors = sink.dropped();
+  return out;
+}
+
+}  // namespace
 
 int RunCheck(const CommonOptions& options) {
   std::optional<compiler::LimitProfile> profile;
@@ -12,56 +74,35 @@ int RunCheck(const CommonOptions& options) {
   if (!ResolveLimits(options, &profile) || !ResolveStage(options, &stage)) {
     return static_cast<int>(Exit::Usage);
   }
-  arbvp::CheckOptions check_options;
-  check_options.profile = profile ? &*profile : nullptr;
-  check_options.expected_kind = stage;
+  arbvp::CheckOptions arb_options;
+  arb_options.profile = profile ? &*profile : nullptr;
+  arb_options.expected_kind = stage;
 
+  std::vector<Input> inputs = ExpandInputs(options.files);
+  std::vector<Checked> results;
+  std::vector<std::unique_ptr<compiler::SourceFile>> strings;
+  if (options.stage == "vert" || options.stage == "frag") {
+    results.push_back(CheckOneShader(inputs, options, &strings));
+  } else {
+    // Workers take inputs in turn; each result lands at its input's index.
+    results.resize(inputs.size());
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+      for (size_t i = next++; i < inputs.size(); i = next++) {
+        results[i] = CheckOne(inputs[i], options, arb_options);
+      }
+    };
+    size_t threads = std::min<size_t>(ResolveJobs(options), inputs.size());
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+  }
   Exit exit = Exit::Ok;
   std::vector<compiler::FileReport> reports;
-  // Sources stay alive until rendering: diagnostics point into them.
-  std::vector<std::unique_ptr<compiler::SourceFile>> sources;
-  std::vector<Input> inputs = ExpandInputs(options.files);
-  // With --stage vert|frag, the files are the strings of one shader, in order.
-  bool one_shader = options.stage == "vert" || options.stage == "frag";
-  std::vector<const compiler::SourceFile*> shader_strings;
-  for (const Input& input : inputs) {
-    compiler::FileReport report;
-    report.path = input.display_path;
-    std::unique_ptr<compiler::SourceFile> source = ReadInput(input, &report);
-    if (!source) {
-      exit = Worse(exit, Exit::Environment);
-      reports.push_back(std::move(report));
-      continue;
-    }
-    if (one_shader) {
-      shader_strings.push_back(source.get());
-      sources.push_back(std::move(source));
-      continue;
-    }
-    compiler::DiagnosticSink sink(options.error_limit);
-    if (std::optional<glsl::Stage> glsl_stage = GlslStage(options, input)) {
-      glsl::CheckShader(*glsl_stage, {source.get()}, glsl::CheckOptions{}, &sink);
-    } else {
-      arbvp::CheckProgram(*source, check_options, &sink);
-    }
-    if (options.werror) sink.PromoteWarnings();
-    if (sink.error_count() > 0) exit = Worse(exit, Exit::Rejected);
-    report.diagnostics = std::move(sink.diagnostics());
-    report.dropped_errors = sink.dropped();
-    reports.push_back(std::move(report));
-    sources.push_back(std::move(source));
-  }
-  if (one_shader && !shader_strings.empty()) {
-    compiler::FileReport report;
-    report.path = shader_strings.front()->path();
-    compiler::DiagnosticSink sink(options.error_limit);
-    glsl::CheckShader(options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment,
-                      shader_strings, glsl::CheckOptions{}, &sink);
-    if (options.werror) sink.PromoteWarnings();
-    if (sink.error_count() > 0) exit = Worse(exit, Exit::Rejected);
-    report.diagnostics = std::move(sink.diagnostics());
-    report.dropped_errors = sink.dropped();
-    reports.push_back(std::move(report));
+  for (Checked& c : results) {
+    exit = Worse(exit, c.exit);
+    reports.push_back(std::move(c.report));
   }
   PrintReports(reports, options);
   return static_cast<int>(exit);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <thread>
 
 #include "cli.h"
 
@@ -106,7 +107,14 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
                     "stop reporting errors of a file after N (0: no limit)")
         ->check(CLI::NonNegativeNumber);
     app->add_flag("-W,--Werror", options->werror, "treat warnings as errors");
+    app->add_option("-j,--jobs", options->jobs, "worker threads (default: one per core)")
+        ->check(CLI::NonNegativeNumber);
   }
+}
+
+size_t ResolveJobs(const CommonOptions& options) {
+  if (options.jobs > 0) return static_cast<size_t>(options.jobs);
+  return std::max(1u, std::thread::hardware_concurrency());
 }
 
 bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitProfile>* out) {
