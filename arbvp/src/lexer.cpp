@@ -38,7 +38,6 @@ class Lexer {
       }
       if (c == '#') {
         // A comment ends at a newline, a carriage return or the end of the text.
-        uint32_t start = pos;
         while (pos < size && text_[pos] != '\n' && text_[pos] != '\r') {
           if (static_cast<unsigned char>(text_[pos]) >= 0x80 && !warned_non_ascii) {
             warned_non_ascii = true;
@@ -47,7 +46,6 @@ class Lexer {
           }
           ++pos;
         }
-        (void)start;
         continue;
       }
       if (IsIdentStart(c)) {

@@ -493,12 +493,9 @@ class Parser {
   // <paramSingleItemDecl> ::= <stateSingleItem> | <programSingleItem> | <paramConstDecl>
   // <paramSingleItemUse>  ::= <stateSingleItem> | <programSingleItem> | <paramConstUse>
   Binding ParseParamSingleItem(bool decl) {
-    const Token& t = Peek();
     if (PeekIdent("state")) {
       std::vector<Binding> rows;
-      Token start = Peek();
       ParseStateItem(&rows, /*multiple=*/false);
-      (void)start;
       return rows.front();
     }
     if (PeekIdent("program")) {
@@ -514,7 +511,6 @@ class Parser {
     if (!decl && (PeekIs(Tok::Integer) || PeekIs(Tok::Float))) {
       return ParseConstScalar(/*allow_sign=*/false);
     }
-    (void)t;
     FailExpected("a state binding, a program parameter or a constant");
   }
 
@@ -780,7 +776,6 @@ class Parser {
       if (Text(item) == "color") {
         b.result = ResultReg::FragColor;
         ParseOptionalIndex(&b, "a draw buffer number");
-        std::string_view word;
         if (PeekIs(Tok::Dot) && PeekIs(Tok::Ident, 1)) {
           std::string_view next = Text(Peek(1));
           if (next == "front" || next == "back" || next == "primary" || next == "secondary") {
@@ -790,7 +785,6 @@ class Parser {
                              next));
           }
         }
-        (void)word;
       } else {
         b.result = ResultReg::FragDepth;
       }
@@ -1557,19 +1551,15 @@ class Parser {
     }
     // <extendedSwizzle> ::= <extSwizComp> "," <extSwizComp> "," <extSwizComp> "," <extSwizComp>
     int sets = 0;
-    Token first_sel = Peek();
     for (int i = 0; i < 4; ++i) {
       if (!PeekIs(Tok::Comma)) {
-        if (i < 4) {
-          Fail(Diag::OperandExtSwizzle,
-               PeekIs(Tok::Semicolon) ? Range{last_end_, last_end_} : RangeOf(Peek()),
-               fmt::format("SWZ needs four selectors (0, 1, or a component, each with an "
-                           "optional sign); found {}",
-                           i));
-        }
+        Fail(Diag::OperandExtSwizzle,
+             PeekIs(Tok::Semicolon) ? Range{last_end_, last_end_} : RangeOf(Peek()),
+             fmt::format("SWZ needs four selectors (0, 1, or a component, each with an "
+                         "optional sign); found {}",
+                         i));
       }
       Advance();  // ','
-      if (i == 0) first_sel = Peek();
       bool negative = false;
       if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negative = Text(Advance()) == "-";
       const Token& sel = Peek();
