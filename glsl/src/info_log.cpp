@@ -26,6 +26,8 @@ struct MessageRule {
 
 constexpr MessageRule kCompileRules[] = {
     {"syntax error", Diag::SyntaxError},
+    {"cannot be bool", Diag::VaryingType},
+    {"must be qualified as flat", Diag::VaryingType},
     {"undeclared identifier", Diag::Undeclared},
     {"redefinition", Diag::Redefinition},
     {"eserved word", Diag::ReservedWord},

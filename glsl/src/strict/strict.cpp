@@ -3,6 +3,10 @@
 
 namespace arbiter::glsl {
 
-void RunStrictChecks(const StrictContext& ctx) { CheckBuiltinVariables(ctx); }
+void RunStrictChecks(const StrictContext& ctx) {
+  CheckQualifiers(ctx);
+  CheckConstInitializers(ctx);
+  CheckBuiltinVariables(ctx);
+}
 
 }  // namespace arbiter::glsl

@@ -24,6 +24,11 @@ struct StrictContext {
   bool as_program;                    // CheckOptions::link_as_program
 };
 
+// Chapter 4, qualifiers: varying types, constant global initializers.
+void CheckQualifiers(const StrictContext& ctx);  // strict_qualifiers.cpp
+// Chapter 4.3.2: no function calls in const initializers.
+void CheckConstInitializers(const StrictContext& ctx);  // strict_const.cpp
+
 // Chapter 7, built-in variables: a vertex shader must write gl_Position (checked when
 // linking, as drivers do).
 void CheckBuiltinVariables(const StrictContext& ctx);  // strict_builtins.cpp

@@ -1,0 +1,118 @@
+// GLSL 1.10 4.3.2: "Initializers for const declarations must be formed from literal values,
+// other const variables (not including function call parameters), or expressions of these.
+// Constructors may be used in such expressions, but function calls may not." glslang folds
+// built-in calls such as sin(1.0) into constants (as GLSL 1.20 allows), so the call is gone
+// from the AST: this rule reads the declaration's tokens instead.
+#include <fmt/format.h>
+
+#include <cctype>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "strict.h"
+
+namespace arbiter::glsl {
+namespace {
+
+struct Tok {
+  std::string_view text;
+  uint32_t offset;
+};
+
+bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Identifiers, numbers and single punctuation characters, without comments and
+// preprocessor lines.
+std::vector<Tok> Tokens(std::string_view text) {
+  std::vector<Tok> out;
+  size_t i = 0;
+  bool line_start = true;
+  while (i < text.size()) {
+    char c = text[i];
+    if (c == '\n') {
+      line_start = true;
+      ++i;
+      continue;
+    }
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++i;
+      continue;
+    }
+    if (line_start && c == '#') {  // a directive runs to the end of its line
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    line_start = false;
+    if (text.substr(i, 2) == "//") {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    if (text.substr(i, 2) == "/*") {
+      size_t end = text.find("*/", i + 2);
+      i = end == std::string_view::npos ? text.size() : end + 2;
+      continue;
+    }
+    size_t start = i;
+    if (IsIdentStart(c)) {
+      while (i < text.size() && IsIdentChar(text[i])) ++i;
+    } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      while (i < text.size() && (IsIdentChar(text[i]) || text[i] == '.')) ++i;
+    } else {
+      ++i;
+    }
+    out.push_back({text.substr(start, i - start), static_cast<uint32_t>(start)});
+  }
+  return out;
+}
+
+const std::set<std::string_view>& ConstructorTypes() {
+  static const std::set<std::string_view> types = {"float", "int",   "bool",  "vec2",  "vec3",
+                                                   "vec4",  "ivec2", "ivec3", "ivec4", "bvec2",
+                                                   "bvec3", "bvec4", "mat2",  "mat3",  "mat4"};
+  return types;
+}
+
+}  // namespace
+
+void CheckConstInitializers(const StrictContext& ctx) {
+  for (const compiler::SourceFile* file : ctx.sources) {
+    std::vector<Tok> toks = Tokens(file->text());
+    std::set<std::string_view> structs;
+    for (size_t i = 0; i + 1 < toks.size(); ++i) {
+      if (toks[i].text == "struct") structs.insert(toks[i + 1].text);
+    }
+    for (size_t i = 0; i < toks.size(); ++i) {
+      if (toks[i].text != "const") continue;
+      // Parameters ("const in float x") have no initializer; stop at ')' or ','.
+      int depth = 0;
+      bool initializer = false;
+      for (size_t j = i + 1; j < toks.size(); ++j) {
+        std::string_view t = toks[j].text;
+        if (t == "(" || t == "[" || t == "{") ++depth;
+        if (t == ")" || t == "]" || t == "}") {
+          if (depth == 0) break;
+          --depth;
+        }
+        if (depth == 0 && t == ";") break;
+        if (depth == 0 && t == "=") initializer = true;
+        if (depth == 0 && t == "," && !initializer) break;  // a parameter list
+        if (depth == 0 && t == ",") initializer = false;    // next declarator
+        bool call = initializer && IsIdentStart(t.front()) && j + 1 < toks.size() &&
+                    toks[j + 1].text == "(" && !ConstructorTypes().count(t) && !structs.count(t);
+        if (call) {
+          ctx.sink->Report(
+              Info(Diag::ConstInitializerCall), file,
+              {toks[j].offset, static_cast<uint32_t>(toks[j].offset + t.size())},
+              fmt::format("the initializer of a const variable calls '{}'; in GLSL 1.10 const "
+                          "initializers may use constructors but no function calls",
+                          t));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace arbiter::glsl

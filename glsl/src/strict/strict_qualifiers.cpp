@@ -1,0 +1,158 @@
+// GLSL 1.10 chapter 4 (variables, types and qualifiers), where glslang 12 follows later
+// versions: varyings of integer, boolean or structure type (4.3.6, allowed from 1.30 on),
+// and global initializers that are not constant (4.3: "Such initializers must have constant
+// type"; later versions allow any expression). Checked from the AST.
+#include <fmt/format.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+
+#include <cctype>
+
+#include "strict.h"
+
+namespace arbiter::glsl {
+namespace {
+
+bool IsVarying(const glslang::TQualifier& q, Stage stage) {
+  return stage == Stage::Vertex ? q.storage == glslang::EvqVaryingOut
+                                : q.storage == glslang::EvqVaryingIn;
+}
+
+// float, vec2..vec4, mat2..mat4 (square), or arrays of these.
+bool IsVaryingType(const glslang::TType& type) {
+  if (type.getBasicType() != glslang::EbtFloat) return false;
+  if (type.isMatrix()) return type.getMatrixCols() == type.getMatrixRows();
+  return true;
+}
+
+// The range of a glslang source location (1-based line and column of string `string`).
+bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
+                const compiler::SourceFile** file, compiler::Range* range) {
+  if (loc.string < 0 || static_cast<size_t>(loc.string) >= ctx.sources.size() || loc.line < 1) {
+    return false;
+  }
+  *file = ctx.sources[static_cast<size_t>(loc.string)];
+  if (static_cast<uint32_t>(loc.line) > (*file)->line_count()) return false;
+  uint32_t begin = (*file)->LineStart(static_cast<uint32_t>(loc.line)) +
+                   static_cast<uint32_t>(loc.column > 0 ? loc.column - 1 : 0);
+  *range = {begin, static_cast<uint32_t>(begin + length)};
+  return true;
+}
+
+// The whole-word occurrence of `name` on a line that also holds `keyword` (the
+// declaration), in any source; false when there is none.
+bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
+                     const compiler::SourceFile** file, compiler::Range* range) {
+  auto is_ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (const compiler::SourceFile* f : ctx.sources) {
+    for (uint32_t n = 1; n <= f->line_count(); ++n) {
+      std::string_view line = f->LineText(n);
+      if (!keyword.empty() && line.find(keyword) == std::string_view::npos) continue;
+      for (size_t at = line.find(name); at != std::string_view::npos;
+           at = line.find(name, at + 1)) {
+        bool before = at == 0 || !is_ident(line[at - 1]);
+        bool after = at + name.size() >= line.size() || !is_ident(line[at + name.size()]);
+        if (before && after) {
+          *file = f;
+          uint32_t begin = f->LineStart(n) + static_cast<uint32_t>(at);
+          *range = {begin, static_cast<uint32_t>(begin + name.size())};
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// Reports at `name`: at glslang's location when it points there, else at the declaration
+// found by `keyword` (glslang's locations of linker objects can be missing).
+void Report(const StrictContext& ctx, Diag diag, const glslang::TSourceLoc& loc,
+            std::string_view name, std::string_view keyword, std::string message) {
+  const compiler::SourceFile* file = ctx.sources.front();
+  compiler::Range range{0, 0};
+  bool at_loc = RangeOfLoc(ctx, loc, name.size(), &file, &range) &&
+                file->text().compare(range.begin, name.size(), name) == 0;
+  if (!at_loc && !FindDeclaration(ctx, name, keyword, &file, &range)) {
+    file = ctx.sources.front();
+    range = {0, 0};
+  }
+  ctx.sink->Report(Info(diag), file, range, std::move(message));
+}
+
+// Finds a symbol that is not a compile-time constant in an initializer expression.
+class NonConstantUse : public glslang::TIntermTraverser {
+ public:
+  const glslang::TIntermSymbol* found = nullptr;
+
+  void visitSymbol(glslang::TIntermSymbol* symbol) override {
+    if (found == nullptr && symbol->getQualifier().storage != glslang::EvqConst) found = symbol;
+  }
+};
+
+std::string_view StorageName(const glslang::TQualifier& q) {
+  switch (q.storage) {
+    case glslang::EvqUniform:
+      return "uniform";
+    case glslang::EvqVaryingIn:
+    case glslang::EvqVaryingOut:
+      return "varying or attribute";
+    case glslang::EvqGlobal:
+      return "global variable";
+    default:
+      return "non-constant variable";
+  }
+}
+
+void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
+  glslang::TIntermAggregate* top = root->getAsAggregate();
+  if (top == nullptr) return;
+  for (TIntermNode* child : top->getSequence()) {
+    glslang::TIntermAggregate* seq = child->getAsAggregate();
+    // Global initializers sit in sequences between the function definitions.
+    if (seq == nullptr || seq->getOp() != glslang::EOpSequence) continue;
+    for (TIntermNode* node : seq->getSequence()) {
+      glslang::TIntermBinary* assign = node->getAsBinaryNode();
+      if (assign == nullptr || assign->getOp() != glslang::EOpAssign) continue;
+      NonConstantUse finder;
+      assign->getRight()->traverse(&finder);
+      if (finder.found == nullptr) continue;
+      const glslang::TIntermSymbol* target = assign->getLeft()->getAsSymbolNode();
+      std::string name = target ? std::string(target->getName().c_str()) : "a global";
+      std::string used(finder.found->getName().c_str());
+      Report(ctx, Diag::GlobalInitializer, finder.found->getLoc(), used, "=",
+             fmt::format("the initializer of global '{}' reads {} '{}'; in GLSL 1.10 global "
+                         "initializers must be constant expressions (assign it in main())",
+                         name, StorageName(finder.found->getQualifier()), used));
+    }
+  }
+}
+
+void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
+  glslang::TIntermAggregate* top = root->getAsAggregate();
+  if (top == nullptr) return;
+  for (TIntermNode* child : top->getSequence()) {
+    glslang::TIntermAggregate* objects = child->getAsAggregate();
+    if (objects == nullptr || objects->getOp() != glslang::EOpLinkerObjects) continue;
+    for (TIntermNode* node : objects->getSequence()) {
+      glslang::TIntermSymbol* symbol = node->getAsSymbolNode();
+      if (symbol == nullptr || !IsVarying(symbol->getQualifier(), ctx.stage)) continue;
+      if (symbol->getName().compare(0, 3, "gl_") == 0) continue;
+      if (IsVaryingType(symbol->getType())) continue;
+      std::string name(symbol->getName().c_str());
+      Report(ctx, Diag::VaryingType, symbol->getLoc(), name, "varying",
+             fmt::format("varying '{}' has type '{}'; GLSL 1.10 varyings are float, vec2, vec3, "
+                         "vec4, mat2, mat3 or mat4, or arrays of these",
+                         name, symbol->getType().getBasicTypeString().c_str()));
+    }
+  }
+}
+
+}  // namespace
+
+void CheckQualifiers(const StrictContext& ctx) {
+  TIntermNode* root = ctx.ast.getTreeRoot();
+  if (root == nullptr) return;
+  CheckVaryingTypes(ctx, root);
+  CheckGlobalInitializers(ctx, root);
+}
+
+}  // namespace arbiter::glsl
