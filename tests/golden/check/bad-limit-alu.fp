@@ -1,0 +1,54 @@
+!!ARBfp1.0
+# ARGS: --limits spec-min
+# 49 ALU instructions: one more than the minimum of 48
+TEMP r;
+MOV r, fragment.color;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+ADD r, r, r;
+MOV result.color, r;
+END
