@@ -46,17 +46,26 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   int errors_before = sink->error_count() + sink->dropped();
   if (sources.empty()) return result;
 
+  // GLSL 1.10 3.1 counts vertical tab and form feed as white space; glslang 12 rejects
+  // them. Blanking them keeps every offset, line and column.
+  std::vector<std::string> texts;
+  for (const compiler::SourceFile* file : sources) {
+    texts.push_back(file->text());
+    for (char& c : texts.back()) {
+      if (c == '\v' || c == '\f') c = ' ';
+    }
+  }
   std::vector<const char*> strings;
   std::vector<int> lengths;
-  std::vector<const char*> names;
-  for (const compiler::SourceFile* file : sources) {
-    strings.push_back(file->text().data());
+  for (size_t i = 0; i < sources.size(); ++i) {
+    const compiler::SourceFile* file = sources[i];
+    strings.push_back(texts[i].data());
     lengths.push_back(static_cast<int>(file->text().size()));
-    names.push_back(file->path().c_str());
   }
   glslang::TShader shader(Language(stage));
-  shader.setStringsWithLengthsAndNames(strings.data(), lengths.data(), names.data(),
-                                       static_cast<int>(strings.size()));
+  // No names: glslang would then expand __FILE__ to a file name, where GLSL 1.10 (3.3) says
+  // it is the source string number. Messages say "<string>:<line>:".
+  shader.setStringsWithLengths(strings.data(), lengths.data(), static_cast<int>(strings.size()));
   // A shader without #version is 1.10 desktop (the default version matters: without it
   // glslang takes such a shader as ES 1.00).
   bool compiled = shader.parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <string>
 #include <string_view>
@@ -143,7 +144,12 @@ Diag Classify(std::string_view text, bool link, bool warning) {
     }
     return Diag::LinkError;
   }
-  if (warning) return Diag::CompileWarning;
+  if (warning) {
+    // GLSL 1.10 3.6 reserves identifiers (and 3.3 macro names) containing "__"; glslang
+    // only warns (later versions relaxed it).
+    if (text.find("consecutive underscores") != std::string_view::npos) return Diag::ReservedWord;
+    return Diag::CompileWarning;
+  }
   for (const MessageRule& rule : kCompileRules) {
     if (text.find(rule.needle) != std::string_view::npos) return rule.diag;
   }
@@ -163,21 +169,24 @@ void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool 
       body.find("compilation error.") != std::string_view::npos) {
     return;
   }
+  // "<string>:<line>: " where <string> is the source string number (0 for the first file).
   const SourceFile* file = sources.front();
   uint32_t line = 0;
-  for (const SourceFile* f : sources) {
-    std::string_view name = f->path();
-    if (body.size() > name.size() + 1 && body.substr(0, name.size()) == name &&
-        body[name.size()] == ':') {
-      size_t digits = name.size() + 1;
-      size_t end = digits;
-      while (end < body.size() && std::isdigit(static_cast<unsigned char>(body[end]))) ++end;
-      if (end > digits && end < body.size() && body[end] == ':') {
-        file = f;
-        line = static_cast<uint32_t>(std::stoul(std::string(body.substr(digits, end - digits))));
-        body = Trim(body.substr(end + 1));
-      }
-      break;
+  {
+    size_t colon = body.find(':');
+    size_t colon2 = colon == std::string_view::npos ? colon : body.find(':', colon + 1);
+    auto all_digits = [](std::string_view d) {
+      return !d.empty() && std::all_of(d.begin(), d.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c));
+      });
+    };
+    if (colon2 != std::string_view::npos && all_digits(body.substr(0, colon)) &&
+        all_digits(body.substr(colon + 1, colon2 - colon - 1))) {
+      size_t string = std::stoul(std::string(body.substr(0, colon)));
+      if (string < sources.size()) file = sources[string];
+      line = static_cast<uint32_t>(
+          std::stoul(std::string(body.substr(colon + 1, colon2 - colon - 1))));
+      body = Trim(body.substr(colon2 + 1));
     }
   }
   constexpr std::string_view kLinking = "Linking ";
@@ -196,6 +205,8 @@ void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool 
     }
   }
   Diag diag = Classify(body, link, m.warning);
+  // glslang's warning about "__" names is reported as an error by the strictness layer.
+  if (m.warning && diag == Diag::ReservedWord) return;
   std::string message = CleanText(text);
   // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
   if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
@@ -223,7 +234,9 @@ void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool 
     }
     if (!needle.empty()) FindAnywhere(sources, needle, &file, &range);
   }
-  compiler::Severity severity = m.warning ? compiler::Severity::Warning : compiler::Severity::Error;
+  compiler::Severity severity = m.warning && diag != Diag::ReservedWord
+                                    ? compiler::Severity::Warning
+                                    : compiler::Severity::Error;
   sink->Report(Info(diag), severity, file, range, message);
 }
 

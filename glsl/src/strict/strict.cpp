@@ -4,6 +4,7 @@
 namespace arbiter::glsl {
 
 void RunStrictChecks(const StrictContext& ctx) {
+  CheckPreprocessor(ctx);
   CheckQualifiers(ctx);
   CheckConstInitializers(ctx);
   CheckBuiltinVariables(ctx);

@@ -24,6 +24,9 @@ struct StrictContext {
   bool as_program;                    // CheckOptions::link_as_program
 };
 
+// Chapter 3.3, the preprocessor: #version below 110, #extension placement, #pragma
+// optimize/debug inside functions, #line operands.
+void CheckPreprocessor(const StrictContext& ctx);  // strict_preprocessor.cpp
 // Chapter 4, qualifiers: varying types, constant global initializers.
 void CheckQualifiers(const StrictContext& ctx);  // strict_qualifiers.cpp
 // Chapter 4.3.2: no function calls in const initializers.

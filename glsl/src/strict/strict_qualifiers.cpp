@@ -83,8 +83,14 @@ class NonConstantUse : public glslang::TIntermTraverser {
  public:
   const glslang::TIntermSymbol* found = nullptr;
 
+  const glslang::TIntermAggregate* call = nullptr;  // a user function call
+
   void visitSymbol(glslang::TIntermSymbol* symbol) override {
     if (found == nullptr && symbol->getQualifier().storage != glslang::EvqConst) found = symbol;
+  }
+  bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
+    if (node->getOp() == glslang::EOpFunctionCall && call == nullptr) call = node;
+    return true;
   }
 };
 
@@ -114,9 +120,18 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
       if (assign == nullptr || assign->getOp() != glslang::EOpAssign) continue;
       NonConstantUse finder;
       assign->getRight()->traverse(&finder);
-      if (finder.found == nullptr) continue;
       const glslang::TIntermSymbol* target = assign->getLeft()->getAsSymbolNode();
       std::string name = target ? std::string(target->getName().c_str()) : "a global";
+      if (finder.found == nullptr && finder.call != nullptr) {
+        std::string callee(finder.call->getName().c_str());
+        callee = callee.substr(0, callee.find('('));
+        Report(ctx, Diag::GlobalInitializer, finder.call->getLoc(), callee, "=",
+               fmt::format("the initializer of global '{}' calls '{}'; in GLSL 1.10 global "
+                           "initializers must be constant expressions (assign it in main())",
+                           name, callee));
+        continue;
+      }
+      if (finder.found == nullptr) continue;
       std::string used(finder.found->getName().c_str());
       Report(ctx, Diag::GlobalInitializer, finder.found->getLoc(), used, "=",
              fmt::format("the initializer of global '{}' reads {} '{}'; in GLSL 1.10 global "
@@ -134,14 +149,19 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
     if (objects == nullptr || objects->getOp() != glslang::EOpLinkerObjects) continue;
     for (TIntermNode* node : objects->getSequence()) {
       glslang::TIntermSymbol* symbol = node->getAsSymbolNode();
-      if (symbol == nullptr || !IsVarying(symbol->getQualifier(), ctx.stage)) continue;
-      if (symbol->getName().compare(0, 3, "gl_") == 0) continue;
+      if (symbol == nullptr || symbol->getName().compare(0, 3, "gl_") == 0) continue;
+      // glslang stores vertex attributes as vertex-stage inputs.
+      bool attribute =
+          ctx.stage == Stage::Vertex && symbol->getQualifier().storage == glslang::EvqVaryingIn;
+      if (!attribute && !IsVarying(symbol->getQualifier(), ctx.stage)) continue;
       if (IsVaryingType(symbol->getType())) continue;
       std::string name(symbol->getName().c_str());
-      Report(ctx, Diag::VaryingType, symbol->getLoc(), name, "varying",
-             fmt::format("varying '{}' has type '{}'; GLSL 1.10 varyings are float, vec2, vec3, "
-                         "vec4, mat2, mat3 or mat4, or arrays of these",
-                         name, symbol->getType().getBasicTypeString().c_str()));
+      std::string_view what = attribute ? "attribute" : "varying";
+      Report(ctx, Diag::VaryingType, symbol->getLoc(), name, what,
+             fmt::format("{} '{}' has type '{}'; GLSL 1.10 {}s are float, vec2, vec3, vec4, "
+                         "mat2, mat3 or mat4{}",
+                         what, name, symbol->getType().getBasicTypeString().c_str(), what,
+                         attribute ? "" : ", or arrays of these"));
     }
   }
 }
