@@ -161,13 +161,25 @@ struct Message {
   std::string body;  // after "ERROR: ", continuation lines appended
 };
 
-void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool link,
+// glslang errors that GLSL 1.10 does not make. 8.7: vertex shaders have texture2DLod,
+// texture2DProjLod, texture1DLod, ..., shadow2DProjLod without any extension; glslang 12
+// asks for GL_ARB_shader_texture_lod.
+bool RelaxedIn110(std::string_view body, Stage stage) {
+  return stage == Stage::Vertex &&
+         body.find("required extension not requested: GL_ARB_shader_texture_lod") !=
+             std::string_view::npos &&
+         body.find("Lod'") != std::string_view::npos;
+}
+
+// Returns false when the message was dropped by a 1.10 relaxation.
+bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage stage, bool link,
           compiler::DiagnosticSink* sink) {
+  if (!m.warning && RelaxedIn110(m.body, stage)) return false;
   std::string_view body = m.body;
   // Summary lines ("3 compilation errors.  No code generated.") repeat what came before.
   if (body.find("compilation errors") != std::string_view::npos ||
       body.find("compilation error.") != std::string_view::npos) {
-    return;
+    return true;
   }
   // "<string>:<line>: " where <string> is the source string number (0 for the first file).
   const SourceFile* file = sources.front();
@@ -206,7 +218,7 @@ void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool 
   }
   Diag diag = Classify(body, link, m.warning);
   // glslang's warning about "__" names is reported as an error by the strictness layer.
-  if (m.warning && diag == Diag::ReservedWord) return;
+  if (m.warning && diag == Diag::ReservedWord) return true;
   std::string message = CleanText(text);
   // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
   if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
@@ -238,13 +250,15 @@ void Emit(const Message& m, const std::vector<const SourceFile*>& sources, bool 
                                     ? compiler::Severity::Warning
                                     : compiler::Severity::Error;
   sink->Report(Info(diag), severity, file, range, message);
+  return true;
 }
 
 }  // namespace
 
-void ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources, bool link,
-                   compiler::DiagnosticSink* sink) {
-  if (log == nullptr || sources.empty()) return;
+int ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources, Stage stage,
+                  bool link, compiler::DiagnosticSink* sink) {
+  int relaxed = 0;
+  if (log == nullptr || sources.empty()) return relaxed;
   std::string_view rest(log);
   Message current;
   bool have = false;
@@ -255,7 +269,7 @@ void ReportInfoLog(const char* log, const std::vector<const SourceFile*>& source
     bool error = line.substr(0, 7) == "ERROR: ";
     bool warning = line.substr(0, 9) == "WARNING: ";
     if (error || warning) {
-      if (have) Emit(current, sources, link, sink);
+      if (have && !Emit(current, sources, stage, link, sink)) ++relaxed;
       current = Message{warning, std::string(line.substr(error ? 7 : 9))};
       have = true;
     } else if (have && !Trim(line).empty()) {
@@ -263,7 +277,8 @@ void ReportInfoLog(const char* log, const std::vector<const SourceFile*>& source
       current.body += Trim(line);
     }
   }
-  if (have) Emit(current, sources, link, sink);
+  if (have && !Emit(current, sources, stage, link, sink)) ++relaxed;
+  return relaxed;
 }
 
 }  // namespace arbiter::glsl

@@ -5,12 +5,20 @@
 
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/source.h"
+#include "arbiter/glsl/check.h"
 
 namespace arbiter::glsl {
 
 // Reports every ERROR/WARNING of a glslang info log. Compile messages carry
-// "name:line:"; link messages carry no location and are placed at the construct they name.
-void ReportInfoLog(const char* log, const std::vector<const compiler::SourceFile*>& sources,
-                   bool link, compiler::DiagnosticSink* sink);
+// "<string>:<line>:"; link messages carry no location and are placed at the construct they
+// name. Errors that GLSL 1.10 does not make are dropped; returns how many.
+int ReportInfoLog(const char* log, const std::vector<const compiler::SourceFile*>& sources,
+                  Stage stage, bool link, compiler::DiagnosticSink* sink);
+
+// The same for messages of no particular stage (a two-stage program link).
+inline void ReportInfoLog(const char* log, const std::vector<const compiler::SourceFile*>& sources,
+                          bool link, compiler::DiagnosticSink* sink) {
+  ReportInfoLog(log, sources, Stage::Fragment, link, sink);
+}
 
 }  // namespace arbiter::glsl
