@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.1 "The source character set used for the OpenGL shading languages is a subset of ASCII." (letters, digits, _ . + - / * % < > [ ] ( ) { } ^ | & ~ = ! : ; , ? # and white space)
+#version 110
+float $scale = 1.0;
+void main()
+{
+    gl_Position = vec4($scale);
+}

@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.1 "The source character set used for the OpenGL shading languages is a subset of ASCII." (letters, digits, _ . + - / * % < > [ ] ( ) { } ^ | & ~ = ! : ; , ? # and white space)
+// 3.1 "There are no character or string data types, so no quoting characters are included."
+#version 110
+void main()
+{
+    int c = 'a';
+    gl_Position = vec4(0.0);
+}

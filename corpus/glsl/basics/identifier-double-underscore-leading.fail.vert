@@ -1,0 +1,10 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.6 "In addition, all identifiers containing two consecutive underscores (__) are reserved as possible future keywords."
+float __scale = 1.0;
+void main()
+{
+    gl_Position = vec4(__scale);
+}

@@ -1,0 +1,10 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 1.1 "3.6 ... clarified that the listed keywords and reserved words are the only ones." (common is reserved only in later versions)
+float common = 1.0;
+void main()
+{
+    gl_FragColor = vec4(common);
+}

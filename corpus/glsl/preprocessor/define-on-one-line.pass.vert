@@ -1,0 +1,11 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 3.3 "Each directive is terminated by a new-line."
+#version 110
+#define SUM(a, b) ((a) + (b))
+void main()
+{
+    gl_Position = vec4(SUM(1.0, 2.0));
+}

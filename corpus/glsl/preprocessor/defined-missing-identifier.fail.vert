@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "The defined operator can be used in either of the following ways: defined identifier / defined ( identifier )"
+#version 110
+#if defined
+#endif
+void main()
+{
+    gl_Position = vec4(0.0);
+}

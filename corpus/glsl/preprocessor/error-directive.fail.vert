@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "#error will cause the implementation to put a diagnostic message into the shader's information log ... The implementation must then consider the shader to be ill-formed."
+#version 110
+#error this shader is ill-formed
+void main()
+{
+    gl_Position = vec4(0.0);
+}

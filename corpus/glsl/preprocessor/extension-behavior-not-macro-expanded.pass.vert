@@ -1,0 +1,13 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 3.3 "Macro expansion is not done on lines containing #extension and #version directives."
+// 3.3 "#extension extension_name : behavior / #extension all : behavior" (behavior: require, enable, warn, disable)
+#version 110
+#define disable require
+#extension all : disable
+void main()
+{
+    gl_Position = vec4(0.0);
+}

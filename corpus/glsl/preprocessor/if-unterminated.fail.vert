@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "#if, #ifdef, #ifndef, #else, #elif, and #endif are defined to operate as is standard for C++ preprocessors."
+#version 110
+#if 1
+void main()
+{
+    gl_Position = vec4(0.0);
+}

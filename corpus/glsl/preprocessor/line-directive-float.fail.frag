@@ -1,0 +1,10 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "#line must have, after macro substitution, one of the following two forms: #line line / #line line source-string-number where line and source-string-number are constant integer expressions."
+#line 1.5
+void main()
+{
+    gl_FragColor = vec4(0.0);
+}

@@ -1,0 +1,12 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 3.3 "If an implementation does not recognize the tokens following #pragma, then it will ignore that pragma."
+// 3.3 "The STDGL pragma is used to reserve pragmas for use by future revisions of this language." (no STDGL pragma is defined by 1.10)
+#version 110
+void main()
+{
+#pragma STDGL invariant(all)
+    gl_Position = vec4(0.0);
+}

@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "There are no number sign based operators (no #, #@, ##, etc.), nor is there a sizeof operator."
+#version 110
+#define CAT(a, b) a ## b
+void main()
+{
+    float xy = 1.0;
+    gl_Position = vec4(CAT(x, y));
+}

@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 3.3 "Any directive not listed above will cause a diagnostic message and make the implementation treat the shader as ill-formed."
+#version 110
+#include <common>
+void main()
+{
+    gl_Position = vec4(0.0);
+}

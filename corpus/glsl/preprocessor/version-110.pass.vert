@@ -1,0 +1,10 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 3.3 "#version number where number must be 110 ... in which case the directive will be accepted with no errors or warnings."
+#version 110
+void main()
+{
+    gl_Position = vec4(0.0);
+}

@@ -1,0 +1,16 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.4 "Attribute variables are read-only as far as the vertex shader is concerned."
+#version 110
+attribute vec4 position;
+void set(out vec4 v)
+{
+    v = vec4(1.0);
+}
+void main()
+{
+    set(position);
+    gl_Position = position;
+}

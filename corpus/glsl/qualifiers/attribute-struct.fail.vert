@@ -1,0 +1,15 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.4 "The attribute qualifier can be used only with the data types float, vec2, vec3, vec4, mat2, mat3, and mat4."
+// 4.3.4 "Attribute variables cannot be declared as arrays or structures."
+#version 110
+struct S {
+    vec4 p;
+};
+attribute S s;
+void main()
+{
+    gl_Position = vec4(0.0);
+}

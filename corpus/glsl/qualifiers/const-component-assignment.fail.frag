@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.2 "It is an error to write to a const variable outside of its declaration, so they must be initialized when declared."
+// 4.3.2 "Any variables qualified as constant are read-only variables for that shader."
+void main()
+{
+    const vec4 c = vec4(1.0);
+    c.x = 0.0;
+    gl_FragColor = c;
+}

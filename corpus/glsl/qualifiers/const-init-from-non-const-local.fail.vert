@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.2 "Initializers for const declarations must be formed from literal values, other const variables (not including function call paramaters), or expressions of these."
+#version 110
+void main()
+{
+    float x = 1.0;
+    const float c = x;
+    gl_Position = vec4(c);
+}

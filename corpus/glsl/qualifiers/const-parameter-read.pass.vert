@@ -1,0 +1,14 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 4.3 "const: a compile-time constant, or a function parameter that is read-only"
+#version 110
+float twice(const float x)
+{
+    return x * 2.0;
+}
+void main()
+{
+    gl_Position = vec4(twice(1.0));
+}

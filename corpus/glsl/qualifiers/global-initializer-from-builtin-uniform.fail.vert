@@ -1,0 +1,10 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Declarations of globals without a qualifier, or with just the const qualifier may include initializers ... Such initializers must have constant type."
+vec4 row = gl_ModelViewMatrix[0];
+void main()
+{
+    gl_Position = row;
+}

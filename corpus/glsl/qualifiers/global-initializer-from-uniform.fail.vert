@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Declarations of globals without a qualifier, or with just the const qualifier may include initializers ... Such initializers must have constant type."
+#version 110
+uniform float u;
+float g = u;
+void main()
+{
+    gl_Position = vec4(g);
+}

@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Global variables can only use the qualifiers const, attribute, uniform, or varying. Only one may be specified."
+#version 110
+uniform varying vec4 color;
+void main()
+{
+    gl_Position = vec4(0.0);
+}

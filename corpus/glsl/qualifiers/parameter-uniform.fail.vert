@@ -1,0 +1,14 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Function parameters can only use the in, out, inout, or const qualifiers."
+#version 110
+float f(uniform float a)
+{
+    return a;
+}
+void main()
+{
+    gl_Position = vec4(0.0);
+}

@@ -1,0 +1,13 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Function parameters can only use the in, out, inout, or const qualifiers."
+float f(varying float a)
+{
+    return a;
+}
+void main()
+{
+    gl_FragColor = vec4(0.0);
+}

@@ -1,0 +1,15 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.5 "All uniform variables are read-only and are initialized either directly by an application via API commands, or indirectly by OpenGL."
+#version 110
+struct S {
+    float x;
+};
+uniform S s;
+void main()
+{
+    s.x = 1.0;
+    gl_Position = vec4(s.x);
+}

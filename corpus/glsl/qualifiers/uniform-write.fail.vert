@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3.5 "All uniform variables are read-only and are initialized either directly by an application via API commands, or indirectly by OpenGL."
+#version 110
+uniform vec4 offset;
+void main()
+{
+    offset = vec4(1.0);
+    gl_Position = offset;
+}

@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.3 "Declarations of globals without a qualifier, or with just the const qualifier may include initializers ... Such initializers must have constant type."
+#version 110
+varying vec4 color = vec4(1.0);
+void main()
+{
+    gl_Position = vec4(0.0);
+}

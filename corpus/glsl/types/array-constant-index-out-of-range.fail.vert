@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1.9 "It is illegal to declare an array with a size, and then later (in the same shader) index the same array with an integral constant expression greater than or equal to the declared size."
+#version 110
+void main()
+{
+    float a[3];
+    a[3] = 1.0;
+    gl_Position = vec4(0.0);
+}

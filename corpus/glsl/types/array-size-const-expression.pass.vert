@@ -1,0 +1,18 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 4.1.9 "When an array size is specified in a declaration, it must be an integral constant expression (see Section 4.3.3) greater than zero."
+// 4.3.3 "An integral constant expression can be one of: a literal integer value; a global or local scalar integer variable qualified as const, not including function parameters qualified as const; an expression whose operands are integral constant expressions, including constructors, but excluding function calls."
+#version 110
+const int n = 2;
+void main()
+{
+    const int m = n * 3 - 1;
+    float a[n];
+    float b[m];
+    float c[(n + m) / 2];
+    float d[int(3)];
+    a[1] = b[4] = c[2] = d[2] = 1.0;
+    gl_Position = vec4(a[1]);
+}

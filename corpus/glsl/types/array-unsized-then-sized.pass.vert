@@ -1,0 +1,15 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 4.1.9 "It is legal to declare an array without a size and then later re-declare the same name as an array of the same type and specify a size."
+// 4.1.9 "If an array is indexed with an expression that is not an integral constant expression or passed as an argument to a function, then its size must be declared before any such use."
+#version 110
+uniform int index;
+float values[];
+float values[4];
+void main()
+{
+    values[index] = 1.0;
+    gl_Position = vec4(values[index]);
+}

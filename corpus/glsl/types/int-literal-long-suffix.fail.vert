@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1.3 "There are no letter suffixes."
+#version 110
+void main()
+{
+    int i = 10L;
+    gl_Position = vec4(float(i));
+}

@@ -1,0 +1,10 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1.7 "They can only be declared as function parameters or uniforms"
+sampler2D tex;
+void main()
+{
+    gl_FragColor = texture2D(tex, vec2(0.5));
+}

@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1.7 "They can only be declared as function parameters or uniforms"
+uniform sampler2D tex;
+void main()
+{
+    sampler2D local = tex;
+    gl_FragColor = texture2D(local, vec2(0.5));
+}

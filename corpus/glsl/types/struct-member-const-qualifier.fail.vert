@@ -1,0 +1,14 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1.8 "Member declarators do not contain any qualifiers. Nor do they contain any bit fields."
+// 4.3.2 "Structure fields may not be qualified with const."
+#version 110
+struct S {
+    const float x;
+};
+void main()
+{
+    gl_Position = vec4(0.0);
+}

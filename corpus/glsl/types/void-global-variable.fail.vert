@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// 4.1 "void for functions that do not return a value"
+#version 110
+void nothing;
+void main()
+{
+    gl_Position = vec4(0.0);
+}
