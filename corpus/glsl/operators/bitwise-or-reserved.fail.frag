@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// Section 5.1: "bit-wise inclusive or (reserved) |" and "Those marked reserved are illegal."
+uniform int a;
+void main()
+{
+    int c = a | 1;
+    gl_FragColor = vec4(float(c));
+}

@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// Section 5.6: "The components of a matrix can be accessed using array subscripting syntax."; 5.2: the subscript is "an expression whose type is an integer"
+#version 110
+uniform mat2 m;
+void main()
+{
+    vec2 v = m[1.0];
+    gl_FragColor = vec4(v, 0.0, 1.0);
+}

@@ -1,0 +1,12 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// Section 5.9: "Operators and (&), or ( | ), exclusive or (^), not (~), right-shift (>>), left-shift (<<). These operators are reserved for future use."
+#version 110
+uniform int a;
+void main()
+{
+    int c = a << 2;
+    gl_Position = vec4(float(c));
+}

@@ -1,0 +1,15 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// Section 6.1: "All functions must be either declared with a prototype or defined with a body before they are called."
+#version 110
+float later(float x);
+void main()
+{
+    gl_Position = vec4(later(1.0));
+}
+float later(float x)
+{
+    return x;
+}

@@ -1,0 +1,11 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+// Section 6.1: "If functions' names and argument types match, then their return type and parameter qualifiers must also match." (sin(float) is a built-in returning float)
+#version 110
+int sin(float x);
+void main()
+{
+    gl_FragColor = vec4(1.0);
+}
