@@ -17,7 +17,8 @@ echo "${#files[@]} files under $dir"
 # glslangValidator would link all files into one program; arbiter links each shader alone,
 # so the closest comparison is compile-only for glslangValidator (arbiter does more work).
 hyperfine -N -i --warmup 2 --runs "${RUNS:-10}" --export-markdown "${EXPORT:-/dev/null}" \
-  "$arbiter check -j 1 ${files[*]}" \
-  "$arbiter check ${files[*]}" \
-  "glslangValidator -d ${files[*]}" \
+  -n "arbiter check -j 1 (all files)" "$arbiter check -j 1 ${files[*]}" \
+  -n "arbiter check (all files, -j cores)" "$arbiter check ${files[*]}" \
+  -n "glslangValidator -d (all files)" "glslangValidator -d ${files[*]}" \
+  -n "glslangValidator -d (one process per file)" \
   "bash -c 'while read -r f; do glslangValidator -d \"\$f\" >/dev/null; done < $list'"
