@@ -167,7 +167,7 @@ struct Binding {
   Range range;                                         // the binding's text
   Range selector;        // the index integer ([n]) that range checks point at; else == range
   Range row_sel;         // the row integer of .row[n] (MatrixRow)
-  Range item;  // the word naming the item ("weight", "palette"), for feature errors
+  Range item;            // the word naming the item ("weight", "palette"), for feature errors
   bool indexed = false;  // the binding spelled its selector ("texcoord[0]", not "texcoord")
 };
 

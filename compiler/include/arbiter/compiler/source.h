@@ -48,8 +48,7 @@ class SourceFile {
 // Reads a whole file ("-" reads standard input). On failure returns false and sets `error`
 // to a lower-case reason ("no such file or directory", "is a directory", "permission
 // denied", ...) without the path. Inputs over 4 GiB are refused (offsets are 32-bit).
-[[nodiscard]] bool ReadFileBytes(const std::string& path, std::string* bytes,
-                                 std::string* error);
+[[nodiscard]] bool ReadFileBytes(const std::string& path, std::string* bytes, std::string* error);
 
 // Writes `bytes` to `path` atomically (temporary file in the same folder, fsync, then
 // rename; the temporary is removed on failure). A replaced file keeps its permissions.
