@@ -1,0 +1,2 @@
+uniform vec4 tint;
+void main() { gl_FragColor = tint * shade; }

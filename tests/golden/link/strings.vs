@@ -1,0 +1,1 @@
+void main() { uv = gl_MultiTexCoord0.xy; gl_Position = ftransform(); }
