@@ -46,6 +46,9 @@ struct CommonOptions {
   std::string limits;
   std::string stage;
   int jobs = 0;  // -j: worker threads; 0 = the number of cores
+  // --driver-check and --driver (cli/driver_check.h): `check` also asks Mesa.
+  bool driver_check = false;
+  std::string driver = "softpipe";
   std::vector<std::string> files;
 };
 

@@ -7,6 +7,7 @@
 #include "arbiter/arbvp/check.h"
 #include "arbiter/glsl/check.h"
 #include "cli.h"
+#include "driver_check.h"
 
 namespace arbiter::cli {
 namespace {
@@ -37,6 +38,12 @@ Checked CheckOne(const Input& input, const CommonOptions& options,
   if (sink.error_count() > 0) out.exit = Exit::Rejected;
   out.report.diagnostics = std::move(sink.diagnostics());
   out.report.dropped_errors = sink.dropped();
+  // --driver-check: Mesa's verdict beside arbiter's (cli/driver_check.cpp).
+  if (options.driver_check) {
+    if (std::optional<glsl::Stage> stage = GlslStage(options, input)) {
+      out.exit = Worse(out.exit, DriverCheck(options, *stage, {out.source.get()}, &out.report));
+    }
+  }
   return out;
 }
 
@@ -63,6 +70,11 @@ Checked CheckOneShader(const std::vector<Input>& inputs, const CommonOptions& op
   if (sink.error_count() > 0) out.exit = Exit::Rejected;
   out.report.diagnostics = std::move(sink.diagnostics());
   out.report.dropped_errors = sink.dropped();
+  // --driver-check: Mesa's verdict beside arbiter's (cli/driver_check.cpp).
+  if (options.driver_check) {
+    glsl::Stage stage = options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment;
+    out.exit = Worse(out.exit, DriverCheck(options, stage, strings, &out.report));
+  }
   return out;
 }
 

@@ -1,8 +1,18 @@
 // The arbiter command: dispatches to one verb per subcommand.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "cli.h"
+#include "driver_check.h"
+
+namespace arbiter::cli {
+// cmd_link.cpp: adds the `link` subcommand; the returned function runs it once parsed.
+std::function<int()> AddLinkCommand(CLI::App* app);
+}  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
   using arbiter::cli::CommonOptions;
@@ -14,18 +24,29 @@ int main(int argc, char** argv) {
   CommonOptions check_options;
   CLI::App* check = app.add_subcommand("check", "validate ARB vertex/fragment programs");
   arbiter::cli::AddCommonOptions(check, &check_options, /*diagnostics=*/true);
+  arbiter::cli::AddDriverCheckOptions(check, &check_options);
 
   CommonOptions info_options;
-  CLI::App* info = app.add_subcommand("info", "statistics and reflection of ARB programs");
+  CLI::App* info =
+      app.add_subcommand("info", "statistics and reflection of ARB programs and GLSL shaders");
   arbiter::cli::AddCommonOptions(info, &info_options, /*diagnostics=*/false);
 
+  std::function<int()> run_link = arbiter::cli::AddLinkCommand(&app);
+
   try {
-    app.parse(argc, argv);
+    // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
+    // "-error", so it is passed on as --Werror.
+    std::vector<std::string> args;
+    for (int i = argc - 1; i >= 1; --i) {
+      args.emplace_back(std::string_view(argv[i]) == "-Werror" ? "--Werror" : argv[i]);
+    }
+    app.parse(std::move(args));
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
     return code == 0 ? 0 : static_cast<int>(Exit::Usage);
   }
   if (check->parsed()) return arbiter::cli::RunCheck(check_options);
   if (info->parsed()) return arbiter::cli::RunInfo(info_options);
+  if (app.get_subcommand("link")->parsed()) return run_link();
   return static_cast<int>(Exit::Usage);
 }

@@ -110,7 +110,14 @@ std::string Generate() {
       "PROFILE`, exceeding the profile is an error.\n\n"
       "## io-read\n\n"
       "**error**: an input could not be read (missing file, permission, a directory without\n"
-      "programs). Exit code 3.\n\n";
+      "programs). Exit code 3.\n\n"
+      "## driver-check-differs\n\n"
+      "**note**: with `--driver-check`, Mesa's verdict on a GLSL shader differs from arbiter's;\n"
+      "the note gives both verdicts and Mesa's first error line. It never changes the exit\n"
+      "code. Where Mesa departs from GLSL 1.10 is listed in `docs/glsl-disagreements.md`.\n\n"
+      "## runtime-gl-error\n\n"
+      "**error**: a GL call failed while Mesa checked a shader for `--driver-check`. Exit code "
+      "3.\n\n";
   std::vector<const compiler::DiagnosticInfo*> infos = AllDiagnostics();
   const auto& glsl_infos = glsl::AllDiagnostics();
   infos.insert(infos.end(), glsl_infos.begin(), glsl_infos.end());

@@ -1,0 +1,122 @@
+// arbiter link: a GLSL vertex shader and fragment shader checked as one program.
+#include <fmt/format.h>
+
+#include <functional>
+#include <memory>
+
+#include "arbiter/glsl/link.h"
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+struct LinkCommandOptions {
+  CommonOptions common;            // --format --color --limits --error-limit -Werror
+  std::vector<std::string> files;  // VERT FRAG, stages from their extensions
+  std::vector<std::string> vert;   // --vert: the vertex shader's strings, in order
+  std::vector<std::string> frag;   // --frag: the fragment shader's strings, in order
+};
+
+Input MakeInput(const std::string& path) { return {path, path == "-" ? "<stdin>" : path, {}}; }
+
+// Reads a stage's inputs, one report per file.
+void ReadStage(const std::vector<Input>& inputs, std::vector<const compiler::SourceFile*>* sources,
+               std::vector<std::unique_ptr<compiler::SourceFile>>* keep,
+               std::vector<compiler::FileReport>* reports, Exit* exit) {
+  for (const Input& input : inputs) {
+    compiler::FileReport report;
+    report.path = input.display_path;
+    std::unique_ptr<compiler::SourceFile> source = ReadInput(input, &report);
+    if (source) {
+      sources->push_back(source.get());
+      keep->push_back(std::move(source));
+    } else {
+      *exit = Exit::Environment;
+    }
+    reports->push_back(std::move(report));
+  }
+}
+
+int RunLink(const LinkCommandOptions& options) {
+  const CommonOptions& common = options.common;
+  std::optional<compiler::LimitProfile> profile;
+  if (!ResolveLimits(common, &profile)) return static_cast<int>(Exit::Usage);
+  std::vector<Input> vert;
+  std::vector<Input> frag;
+  for (const std::string& path : options.vert) vert.push_back(MakeInput(path));
+  for (const std::string& path : options.frag) frag.push_back(MakeInput(path));
+  for (const std::string& path : options.files) {
+    std::optional<glsl::Stage> stage = glsl::StageFromPath(path);
+    if (!stage) {
+      fmt::print(stderr,
+                 "arbiter: error: cannot tell the stage of '{}' from its extension (.vert .vs "
+                 ".frag .fs); name it with --vert FILE or --frag FILE\n",
+                 path);
+      return static_cast<int>(Exit::Usage);
+    }
+    (*stage == glsl::Stage::Vertex ? vert : frag).push_back(MakeInput(path));
+  }
+  if (vert.empty() || frag.empty()) {
+    fmt::print(stderr,
+               "arbiter: error: link needs a vertex shader and a fragment shader (VERT "
+               "FRAG, or --vert FILE... --frag FILE...)\n");
+    return static_cast<int>(Exit::Usage);
+  }
+
+  Exit exit = Exit::Ok;
+  std::vector<compiler::FileReport> reports;
+  std::vector<std::unique_ptr<compiler::SourceFile>> keep;
+  std::vector<const compiler::SourceFile*> vert_sources;
+  std::vector<const compiler::SourceFile*> frag_sources;
+  ReadStage(vert, &vert_sources, &keep, &reports, &exit);
+  ReadStage(frag, &frag_sources, &keep, &reports, &exit);
+  if (exit == Exit::Ok) {
+    compiler::DiagnosticSink sink(common.error_limit);
+    glsl::LinkOptions link_options;
+    link_options.profile = profile ? &*profile : nullptr;
+    glsl::LinkProgram(vert_sources, frag_sources, link_options, &sink);
+    if (common.werror) sink.PromoteWarnings();
+    if (sink.error_count() + sink.dropped() > 0) exit = Exit::Rejected;
+    // Each diagnostic goes to the report of its file (all files were read: one per report).
+    for (compiler::Diagnostic& d : sink.diagnostics()) {
+      size_t index = 0;
+      for (size_t i = 0; i < keep.size(); ++i) {
+        if (keep[i].get() == d.file) index = i;
+      }
+      reports[index].diagnostics.push_back(std::move(d));
+    }
+    reports.front().dropped_errors = sink.dropped();
+  }
+  PrintReports(reports, common);
+  return static_cast<int>(exit);
+}
+
+}  // namespace
+
+// Adds the `link` subcommand to `app`; the returned function runs it once it is parsed.
+// (Declared in main.cpp, which registers the verbs.)
+std::function<int()> AddLinkCommand(CLI::App* app) {
+  auto options = std::make_shared<LinkCommandOptions>();
+  CLI::App* link =
+      app->add_subcommand("link", "check a GLSL vertex shader and fragment shader as one program");
+  link->add_option("files", options->files,
+                   "VERT FRAG: shader files, stages from their extensions (.vert .vs .frag .fs; "
+                   "'-' needs --vert or --frag)");
+  link->add_option("--vert", options->vert, "the vertex shader's files, in order (one shader)");
+  link->add_option("--frag", options->frag, "the fragment shader's files, in order (one shader)");
+  CommonOptions& common = options->common;
+  link->add_option("--format", common.format, "output format")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  link->add_option("--color", common.color, "colour text output")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  link->add_option("--limits", common.limits,
+                   "limit profile: spec-min, mesa, or a JSON file (default: portability "
+                   "warnings)");
+  link->add_option("--error-limit", common.error_limit,
+                   "stop reporting errors after N (0: no limit)")
+      ->check(CLI::NonNegativeNumber);
+  link->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
+  return [options] { return RunLink(*options); };
+}
+
+}  // namespace arbiter::cli
