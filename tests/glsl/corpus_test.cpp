@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "arbiter/glsl/check.h"
+#include "arbiter/glsl/test_config.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -56,61 +57,12 @@ std::set<std::string> KnownGaps() {
   return gaps;
 }
 
-struct Config {
-  std::map<std::string, std::string> values;
-  std::string error;
-};
-
-// Parses the `[config]` comment block at the top (leaders //, /* or *).
-Config ParseConfig(const std::string& text) {
-  Config config;
-  std::istringstream in(text);
-  std::string line;
-  bool inside = false;
-  bool done = false;
-  while (!done && std::getline(in, line)) {
-    std::string s = line;
-    s.erase(0, s.find_first_not_of(" \t"));
-    for (const char* leader : {"//", "/*", "*"}) {
-      if (s.rfind(leader, 0) == 0) {
-        s.erase(0, std::string(leader).size());
-        break;
-      }
-    }
-    s.erase(0, s.find_first_not_of(" \t"));
-    while (!s.empty() &&
-           (s.back() == '\r' || s.back() == ' ' || s.back() == '/' || s.back() == '*')) {
-      s.pop_back();
-    }
-    if (s == "[config]") {
-      inside = true;
-    } else if (s == "[end config]") {
-      done = true;
-    } else if (inside && !s.empty()) {
-      size_t colon = s.find(':');
-      if (colon == std::string::npos) {
-        config.error = "config line without ':': " + s;
-        continue;
-      }
-      std::string key = s.substr(0, colon);
-      std::string value = s.substr(colon + 1);
-      value.erase(0, value.find_first_not_of(" \t"));
-      static const std::set<std::string> kKeys = {"expect_result", "glsl_version",
-                                                  "require_extensions", "check_link"};
-      if (!kKeys.count(key)) config.error = "unknown config key '" + key + "'";
-      if (!config.values.emplace(key, value).second) config.error = "duplicate key '" + key + "'";
-    }
-  }
-  if (!done) config.error = "no [config] ... [end config] block";
-  return config;
-}
-
 class GlslCorpusTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GlslCorpusTest, Verdict) {
   const std::string& name = GetParam();
   std::string text = ReadAll(CorpusRoot() / name);
-  Config config = ParseConfig(text);
+  ParserTestConfig config = ParseParserTestConfig(text);
   ASSERT_TRUE(config.error.empty()) << name << ": " << config.error;
   ASSERT_TRUE(config.values.count("expect_result")) << name << ": no expect_result";
   std::string expect = config.values["expect_result"];

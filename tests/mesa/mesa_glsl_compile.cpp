@@ -32,61 +32,13 @@
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/check.h"
+#include "arbiter/glsl/test_config.h"
 #include "arbiter/runtime/mesa.h"
 
 namespace {
 
 using Json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
-
-struct Config {
-  bool found = false;
-  std::map<std::string, std::string> values;
-  std::string error;
-};
-
-// Parses the `[config]` comment block at the top (leaders //, /* or *), as
-// tests/glsl/corpus_test.cpp does.
-Config ParseConfig(const std::string& text) {
-  Config config;
-  std::istringstream in(text);
-  bool inside = false;
-  for (std::string s; std::getline(in, s);) {
-    s.erase(0, s.find_first_not_of(" \t"));
-    for (const char* leader : {"//", "/*", "*"}) {
-      if (s.rfind(leader, 0) == 0) {
-        s.erase(0, std::string(leader).size());
-        break;
-      }
-    }
-    s.erase(0, s.find_first_not_of(" \t"));
-    while (!s.empty() &&
-           (s.back() == '\r' || s.back() == ' ' || s.back() == '/' || s.back() == '*')) {
-      s.pop_back();
-    }
-    if (s == "[config]") {
-      inside = true;
-    } else if (s == "[end config]") {
-      config.found = inside;
-      break;
-    } else if (inside && !s.empty()) {
-      const size_t colon = s.find(':');
-      if (colon == std::string::npos) {
-        config.error = "config line without ':': " + s;
-        continue;
-      }
-      const std::string key = s.substr(0, colon);
-      std::string value = s.substr(colon + 1);
-      value.erase(0, value.find_first_not_of(" \t"));
-      static const std::set<std::string> kKeys = {"expect_result", "glsl_version",
-                                                  "require_extensions", "check_link"};
-      if (kKeys.count(key) == 0) config.error = "unknown config key '" + key + "'";
-      if (!config.values.emplace(key, value).second) config.error = "duplicate key '" + key + "'";
-    }
-  }
-  if (inside && !config.found) config.error = "[config] without [end config]";
-  return config;
-}
 
 // The first requirement of `require_extensions` the context does not meet, or "".
 std::string UnmetRequirement(const std::string& list, const std::vector<std::string>& have) {
@@ -125,7 +77,7 @@ Json JudgeOne(arbiter::runtime::MesaContext& mesa, const std::string& path, Tota
     return out;
   }
   out["stage"] = *stage == arbiter::glsl::Stage::Vertex ? "vert" : "frag";
-  const Config config = ParseConfig(text);
+  const arbiter::glsl::ParserTestConfig config = arbiter::glsl::ParseParserTestConfig(text);
   if (!config.error.empty()) {
     out["config_error"] = config.error;
     return out;
