@@ -339,6 +339,17 @@ class Parser {
 
   // ---- declarations ----------------------------------------------------------------------
 
+  // Declares the variable of an ATTRIB or OUTPUT statement (unless its name was taken).
+  void AddBoundVariable(const Token& name, bool fresh, VarKind kind, const Binding& binding) {
+    if (!fresh) return;
+    Variable var;
+    var.name = std::string(Text(name));
+    var.kind = kind;
+    var.decl = RangeOf(name);
+    var.bindings.push_back(binding);
+    AddVariable(std::move(var), &name);
+  }
+
   // <ATTRIB_statement> ::= "ATTRIB" <establishName> "=" <vtxAttribBinding>|<fragAttribBinding>
   void ParseAttribStatement() {
     Advance();
@@ -366,13 +377,7 @@ class Parser {
         FailExpected(vp() ? "a vertex attribute binding ('vertex.*')"
                           : "a fragment attribute binding ('fragment.*')");
       }
-      Binding binding = ParseAttribBinding();
-      Variable var;
-      var.name = std::string(Text(name));
-      var.kind = VarKind::Attrib;
-      var.decl = RangeOf(name);
-      var.bindings.push_back(binding);
-      if (fresh) AddVariable(std::move(var), &name);
+      AddBoundVariable(name, fresh, VarKind::Attrib, ParseAttribBinding());
     } catch (const StatementError&) {
       if (fresh) Poison(name);
       throw;
@@ -388,13 +393,7 @@ class Parser {
     Expect(Tok::Equals, "'=' after the output name");
     try {
       if (!PeekIdent("result")) FailExpected("a result binding ('result.*')");
-      Binding binding = ParseResultBinding();
-      Variable var;
-      var.name = std::string(Text(name));
-      var.kind = VarKind::Output;
-      var.decl = RangeOf(name);
-      var.bindings.push_back(binding);
-      if (fresh) AddVariable(std::move(var), &name);
+      AddBoundVariable(name, fresh, VarKind::Output, ParseResultBinding());
     } catch (const StatementError&) {
       if (fresh) Poison(name);
       throw;
