@@ -39,18 +39,22 @@ std::string Checked::Dump() const {
   return out;
 }
 
-Checked Check(const std::string& text, const compiler::LimitProfile* profile) {
+Checked Check(const std::string& text, const CheckOptions& options) {
   Checked c;
   c.source = std::make_unique<compiler::SourceFile>("test", text);
   compiler::DiagnosticSink sink(0);
-  CheckOptions options;
-  options.profile = profile;
   c.result = CheckProgram(*c.source, options, &sink);
   for (const compiler::Diagnostic& d : sink.diagnostics()) {
     compiler::LineCol lc = c.source->Locate(d.range.begin);
     c.diags.push_back({std::string(d.info->code), lc.line, lc.column, d.severity, d.message});
   }
   return c;
+}
+
+Checked Check(const std::string& text, const compiler::LimitProfile* profile) {
+  CheckOptions options;
+  options.profile = profile;
+  return Check(text, options);
 }
 
 Checked CheckVp(const std::string& body, const compiler::LimitProfile* profile) {

@@ -37,6 +37,8 @@ struct Checked {
   std::string Dump() const;
 };
 
+// Checks `text` (a whole program with header) with the given options.
+Checked Check(const std::string& text, const CheckOptions& options);
 // Checks `text` (a whole program with header). `profile` null: portability mode.
 Checked Check(const std::string& text, const compiler::LimitProfile* profile = nullptr);
 // Wraps body lines in "!!ARBvp1.0\n" ... "END\n" (so body line 1 is program line 2).

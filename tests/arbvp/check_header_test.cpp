@@ -12,17 +12,9 @@ using ::testing::IsEmpty;
 
 // Checks `text` as the CLI does with --stage: the caller expects a program of `kind`.
 Checked CheckExpecting(const std::string& text, ProgramKind kind) {
-  Checked c;
-  c.source = std::make_unique<compiler::SourceFile>("test", text);
-  compiler::DiagnosticSink sink(0);
   CheckOptions options;
   options.expected_kind = kind;
-  c.result = CheckProgram(*c.source, options, &sink);
-  for (const compiler::Diagnostic& d : sink.diagnostics()) {
-    compiler::LineCol lc = c.source->Locate(d.range.begin);
-    c.diags.push_back({std::string(d.info->code), lc.line, lc.column, d.severity, d.message});
-  }
-  return c;
+  return Check(text, options);
 }
 
 TEST(CheckHeader, VertexHeaderGivesVertexProgram) {

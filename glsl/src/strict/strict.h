@@ -2,6 +2,7 @@
 // enforce, one file per chapter (strict_<chapter>.cpp), run in a fixed order.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "../diag.h"
@@ -35,6 +36,11 @@ void CheckConstInitializers(const StrictContext& ctx);  // strict_const.cpp
 // Chapter 7, built-in variables: a vertex shader must write gl_Position (checked when
 // linking, as drivers do).
 void CheckBuiltinVariables(const StrictContext& ctx);  // strict_builtins.cpp
+
+// The whole-word occurrence of `name` on a line that also holds `keyword` (a declaration),
+// in any source; false when there is none. For rules whose AST node has no usable location.
+bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
+                     const compiler::SourceFile** file, compiler::Range* range);
 
 // Runs every chapter's checks.
 void RunStrictChecks(const StrictContext& ctx);

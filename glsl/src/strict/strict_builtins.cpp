@@ -71,13 +71,9 @@ void CheckBuiltinVariables(const StrictContext& ctx) {
   // Point at main's definition when it can be found, else at the start of the shader.
   const compiler::SourceFile* file = ctx.sources.front();
   compiler::Range range{0, 0};
-  for (const compiler::SourceFile* f : ctx.sources) {
-    size_t at = f->text().find("main");
-    if (at != std::string::npos) {
-      file = f;
-      range = {static_cast<uint32_t>(at), static_cast<uint32_t>(at + 4)};
-      break;
-    }
+  if (!FindDeclaration(ctx, "main", "void", &file, &range)) {
+    file = ctx.sources.front();
+    range = {0, 0};
   }
   ctx.sink->Report(Info(Diag::PositionUnwritten),
                    ctx.as_program ? compiler::Severity::Error : compiler::Severity::Warning, file,
