@@ -84,6 +84,10 @@ TEST(Strict, PositionUnwritten) {
   program.link_as_program = true;
   EXPECT_THAT(Check(Stage::Vertex, shader, compiler::Severity::Error, program),
               ElementsAre("1:6 glsl-position-unwritten"));
+  // The warning points at main's definition, not at a word that contains "main".
+  EXPECT_THAT(Check(Stage::Vertex, "float domain;\nvoid main() { vec4 c = gl_Color; }\n",
+                    compiler::Severity::Warning),
+              ElementsAre("2:6 glsl-position-unwritten"));
   EXPECT_THAT(Check(Stage::Vertex,
                     "void set(out vec4 p) { p = vec4(1.0); }\nvoid main() { "
                     "set(gl_Position); }\n",
