@@ -10,6 +10,7 @@
 
 #include "diag.h"
 #include "info_log.h"
+#include "source_text.h"
 #include "strict/strict.h"
 
 namespace arbiter::glsl {
@@ -46,21 +47,14 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   int errors_before = sink->error_count() + sink->dropped();
   if (sources.empty()) return result;
 
-  // GLSL 1.10 3.1 counts vertical tab and form feed as white space; glslang 12 rejects
-  // them. Blanking them keeps every offset, line and column.
+  // The text glslang parses keeps every line and column of the user's (source_text.h).
   std::vector<std::string> texts;
-  for (const compiler::SourceFile* file : sources) {
-    texts.push_back(file->text());
-    for (char& c : texts.back()) {
-      if (c == '\v' || c == '\f') c = ' ';
-    }
-  }
+  for (const compiler::SourceFile* file : sources) texts.push_back(PrepareForGlslang(file->text()));
   std::vector<const char*> strings;
   std::vector<int> lengths;
-  for (size_t i = 0; i < sources.size(); ++i) {
-    const compiler::SourceFile* file = sources[i];
-    strings.push_back(texts[i].data());
-    lengths.push_back(static_cast<int>(file->text().size()));
+  for (const std::string& text : texts) {
+    strings.push_back(text.data());
+    lengths.push_back(static_cast<int>(text.size()));
   }
   glslang::TShader shader(Language(stage));
   // No names: glslang would then expand __FILE__ to a file name, where GLSL 1.10 (3.3) says
@@ -70,28 +64,33 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   // glslang takes such a shader as ES 1.00).
   bool compiled = shader.parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);
   int relaxed = ReportInfoLog(shader.getInfoLog(), sources, stage, /*link=*/false, sink);
-  // Only errors that GLSL 1.10 does not make (see info_log.cpp): the shader is accepted,
-  // though without an AST the link step and the strictness layer cannot run.
-  bool relaxed_only =
-      !compiled && relaxed > 0 && sink->error_count() + sink->dropped() == errors_before;
+  // Only errors that GLSL 1.10 does not make (see info_log.cpp): glslang recovered from each
+  // of them, so its AST is the shader's and the link step and the strictness layer run.
+  bool usable = compiled || (relaxed > 0 && sink->error_count() + sink->dropped() == errors_before);
 
-  bool linked = false;
+  // The strictness layer reads the whole AST: glslang's link drops uncalled functions.
+  FragmentOutputWrites fragment_writes;
+  StrictContext ctx{stage,
+                    sources,
+                    sink,
+                    *shader.getIntermediate(),
+                    options.link,
+                    /*linked=*/false,
+                    options.link_as_program,
+                    &fragment_writes};
+  if (usable) RunStrictChecks(ctx);
+
   glslang::TProgram program;
-  if (compiled && options.link) {
+  if (usable && options.link) {
     program.addShader(&shader);
-    linked = program.link(kMessages);
-    ReportInfoLog(program.getInfoLog(), sources, stage, /*link=*/true, sink);
+    int errors_before_link = sink->error_count() + sink->dropped();
+    bool linked = program.link(kMessages);
+    int relaxed_link = ReportInfoLog(program.getInfoLog(), sources, stage, /*link=*/true, sink);
+    ctx.linked =
+        linked || (relaxed_link > 0 && sink->error_count() + sink->dropped() == errors_before_link);
+    RunLinkStrictChecks(ctx);
   }
-  if (compiled) {
-    StrictContext ctx{stage,
-                      sources,
-                      sink,
-                      *shader.getIntermediate(),
-                      options.link && linked,
-                      options.link_as_program};
-    RunStrictChecks(ctx);
-  }
-  if (!compiled && !relaxed_only && sink->error_count() + sink->dropped() == errors_before) {
+  if (!usable && sink->error_count() + sink->dropped() == errors_before) {
     // glslang refused the shader without saying why: never report success.
     sink->Report(Info(Diag::InternalError), sources.front(), {0, 0},
                  "glslang rejected the shader without a message");

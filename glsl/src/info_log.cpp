@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "diag.h"
+#include "source_text.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -161,21 +162,62 @@ struct Message {
   std::string body;  // after "ERROR: ", continuation lines appended
 };
 
-// glslang errors that GLSL 1.10 does not make. 8.7: vertex shaders have texture2DLod,
-// texture2DProjLod, texture1DLod, ..., shadow2DProjLod without any extension; glslang 12
-// asks for GL_ARB_shader_texture_lod.
-bool RelaxedIn110(std::string_view body, Stage stage) {
-  return stage == Stage::Vertex &&
-         body.find("required extension not requested: GL_ARB_shader_texture_lod") !=
-             std::string_view::npos &&
-         body.find("Lod'") != std::string_view::npos;
+// glslang errors that GLSL 1.10 does not make: dropped, or turned into a warning where
+// 1.10 leaves the behaviour undefined. glslang recovers from each of them without further
+// errors and builds the AST the 1.10 text describes, so the strictness layer still runs.
+struct Relaxation {
+  std::string_view needle;
+  bool link;  // a message of the link step
+  bool vertex_only;
+  Diag warning;  // CompileError: dropped without a message
+};
+
+constexpr Relaxation kRelaxations[] = {
+    // 8.7: vertex shaders have texture2DLod, ..., shadow2DProjLod without any extension;
+    // glslang 12 asks for GL_ARB_shader_texture_lod (only dropped for the Lod built-ins).
+    {"required extension not requested: GL_ARB_shader_texture_lod", false, true,
+     Diag::CompileError},
+    // 4.1.8: "Member types must be ... defined in-place by embedding another struct
+    // definition"; glslang 12 follows later versions. It still parses the definition and
+    // scopes its name at the level of the outer struct, as 4.1.8 says.
+    {"cannot nest a structure definition inside a structure", false, false, Diag::CompileError},
+    // 5.8 and 5.7: entire structures are l-values, can be compared and initialize a
+    // structure variable (4.1.8), array fields or not;
+    // glslang applies 1.20's rule for structures with array fields. Whole arrays as
+    // operands are rejected by strict_expressions.cpp from the AST instead.
+    {"'array assignment' : not supported for this version", false, false, Diag::CompileError},
+    {"'array comparison' : not supported for this version", false, false, Diag::CompileError},
+    {"'array initializer' : not supported for this version", false, false, Diag::CompileError},
+    // 5.5, 5.6: "Behavior is undefined if the index is greater than or equal to the size of
+    // the vector" (likewise for matrix columns): not an error (4.1.9 makes it one for arrays
+    // only). glslang clamps the index and goes on.
+    {"vector index out of range", false, false, Diag::IndexOutOfRange},
+    {"matrix index out of range", false, false, Diag::IndexOutOfRange},
+    // 7.2: only assigning both gl_FragColor and gl_FragData is an error; glslang counts any
+    // use. strict_builtins.cpp checks the static writes instead.
+    {"Cannot use both gl_FragColor and gl_FragData", true, false, Diag::CompileError},
+};
+
+// The relaxation that applies to an error, if any.
+const Relaxation* RelaxedIn110(std::string_view body, Stage stage, bool link) {
+  for (const Relaxation& r : kRelaxations) {
+    if (r.link != link || body.find(r.needle) == std::string_view::npos) continue;
+    if (r.vertex_only && (stage != Stage::Vertex || body.find("Lod'") == std::string_view::npos)) {
+      continue;
+    }
+    return &r;
+  }
+  return nullptr;
 }
 
 // Returns false when the message was dropped by a 1.10 relaxation.
 bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage stage, bool link,
           compiler::DiagnosticSink* sink) {
-  if (!m.warning && RelaxedIn110(m.body, stage)) return false;
-  std::string_view body = m.body;
+  const Relaxation* relaxed = m.warning ? nullptr : RelaxedIn110(m.body, stage, link);
+  if (relaxed != nullptr && relaxed->warning == Diag::CompileError) return false;
+  // glslang's messages name the words source_text.cpp renamed as it saw them.
+  std::string restored = RestoreSpelling(m.body);
+  std::string_view body = restored;
   // Summary lines ("3 compilation errors.  No code generated.") repeat what came before.
   if (body.find("compilation errors") != std::string_view::npos ||
       body.find("compilation error.") != std::string_view::npos) {
@@ -216,7 +258,7 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
       text = std::string(Trim(body.substr(close + 3)));
     }
   }
-  Diag diag = Classify(body, link, m.warning);
+  Diag diag = relaxed != nullptr ? relaxed->warning : Classify(body, link, m.warning);
   // glslang's warning about "__" names is reported as an error by the strictness layer.
   if (m.warning && diag == Diag::ReservedWord) return true;
   std::string message = CleanText(text);
@@ -225,7 +267,11 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
       std::islower(static_cast<unsigned char>(message[1]))) {
     message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
   }
-  if (!token.empty()) message += fmt::format(" ('{}')", token);
+  if (relaxed != nullptr) {
+    message += "; GLSL 1.10 leaves such an access undefined (sections 5.5 and 5.6), it is no error";
+  } else if (!token.empty()) {
+    message += fmt::format(" ('{}')", token);
+  }
 
   compiler::Range range{0, 0};
   if (line > 0 && token == "floating-point suffix") {
@@ -246,11 +292,11 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
     }
     if (!needle.empty()) FindAnywhere(sources, needle, &file, &range);
   }
-  compiler::Severity severity = m.warning && diag != Diag::ReservedWord
+  compiler::Severity severity = (m.warning && diag != Diag::ReservedWord) || relaxed != nullptr
                                     ? compiler::Severity::Warning
                                     : compiler::Severity::Error;
   sink->Report(Info(diag), severity, file, range, message);
-  return true;
+  return relaxed == nullptr;
 }
 
 }  // namespace
@@ -279,6 +325,13 @@ int ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources
   }
   if (have && !Emit(current, sources, stage, link, sink)) ++relaxed;
   return relaxed;
+}
+
+bool OnlyRelaxedErrors(const char* log, const std::vector<const SourceFile*>& sources, Stage stage,
+                       bool link) {
+  compiler::DiagnosticSink scratch(0);
+  int relaxed = ReportInfoLog(log, sources, stage, link, &scratch);
+  return relaxed > 0 && scratch.error_count() == 0;
 }
 
 }  // namespace arbiter::glsl

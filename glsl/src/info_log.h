@@ -15,6 +15,11 @@ namespace arbiter::glsl {
 int ReportInfoLog(const char* log, const std::vector<const compiler::SourceFile*>& sources,
                   Stage stage, bool link, compiler::DiagnosticSink* sink);
 
+// Whether a failed glslang step reported only errors that GLSL 1.10 does not make, so that
+// its result stands (as ReportInfoLog, into no sink).
+bool OnlyRelaxedErrors(const char* log, const std::vector<const compiler::SourceFile*>& sources,
+                       Stage stage, bool link);
+
 // The same for messages of no particular stage (a two-stage program link).
 inline void ReportInfoLog(const char* log, const std::vector<const compiler::SourceFile*>& sources,
                           bool link, compiler::DiagnosticSink* sink) {

@@ -14,7 +14,9 @@
 #include <string_view>
 
 #include "diag.h"
+#include "info_log.h"
 #include "reflect_ast.h"
+#include "source_text.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -553,10 +555,12 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
     std::vector<const char*> strings;
     std::vector<int> lengths;
     std::vector<const char*> names;
-    for (const SourceFile* file : sources) {
-      strings.push_back(file->text().data());
-      lengths.push_back(static_cast<int>(file->text().size()));
-      names.push_back(file->path().c_str());
+    std::vector<std::string>& texts = texts_[Index(stage)];
+    for (const SourceFile* file : sources) texts.push_back(PrepareForGlslang(file->text()));
+    for (size_t i = 0; i < sources.size(); ++i) {
+      strings.push_back(texts[i].data());
+      lengths.push_back(static_cast<int>(texts[i].size()));
+      names.push_back(sources[i]->path().c_str());
     }
     auto shader = std::make_unique<glslang::TShader>(stage == Stage::Vertex ? EShLangVertex
                                                                             : EShLangFragment);
@@ -564,7 +568,8 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
                                           static_cast<int>(strings.size()));
     // As CheckShader: without #version a shader is 1.10 desktop.
     parsed_[Index(stage)] =
-        shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);
+        shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages) ||
+        OnlyRelaxedErrors(shader->getInfoLog(), sources, stage, /*link=*/false);
     if (parsed_[Index(stage)]) {
       TIntermNode* root = shader->getIntermediate()->getTreeRoot();
       UseCollector collector(stage);
@@ -577,7 +582,14 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
     }
     shaders_[Index(stage)] = std::move(shader);
   }
-  if (all && any) linked_ = program_->link(kMessages);
+  if (all && any) {
+    linked_ =
+        program_->link(kMessages) || OnlyRelaxedErrors(program_->getInfoLog(),
+                                                       sources_[Index(Stage::Fragment)].empty()
+                                                           ? sources_[Index(Stage::Vertex)]
+                                                           : sources_[Index(Stage::Fragment)],
+                                                       Stage::Fragment, /*link=*/true);
+  }
 }
 
 CompiledProgram::~CompiledProgram() {
@@ -628,7 +640,7 @@ bool CompiledProgram::Reflect(Stage stage, Reflection* out) const {
         continue;
       }
       ReflectedVariable v;
-      v.name = symbol->getName().c_str();
+      v.name = RestoreSpelling(symbol->getName().c_str());
       v.type = TypeName(type);
       v.array_size = type.isArray() ? type.getOuterArraySize() : 0;
       v.components = type.computeNumComponents();

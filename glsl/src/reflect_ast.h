@@ -45,6 +45,7 @@ class CompiledProgram {
   const std::vector<const compiler::SourceFile*>& StageSources(Stage stage) const;
 
   std::vector<const compiler::SourceFile*> sources_[2];
+  std::vector<std::string> texts_[2];  // what glslang parses (source_text.h)
   std::unique_ptr<glslang::TShader> shaders_[2];
   // Each stage's static uses, collected before glslang's link removes uncalled functions.
   std::unique_ptr<StaticUses> uses_[2];

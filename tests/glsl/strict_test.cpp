@@ -95,6 +95,119 @@ TEST(Strict, PositionUnwritten) {
               IsEmpty());
 }
 
+// 3.6 reserves neither 'case' nor 'filter' (glslang 12 does); diagnostics keep the user's
+// spelling of the renamed words.
+TEST(Strict, WordsGlslangReservesAreIdentifiers) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "float case = 1.0;\nfloat filter = case;\nvoid main() { "
+                    "gl_Position = vec4(filter, active, 0.0, 1.0); }\n"),
+              ElementsAre("3:42 glsl-undeclared-identifier"));
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "uniform float common;\nfloat partition = common;\n" + std::string(kMain)),
+              ElementsAre("2:19 glsl-global-initializer"));
+}
+
+// 4.2: "A function body has a scope nested inside the function's definition."
+TEST(Strict, FunctionBodyNestsTheParameterScope) {
+  EXPECT_THAT(Check(Stage::Vertex, "float f(float x) {\n  vec2 x = vec2(2.0);\n  return x.y;\n}\n" +
+                                       std::string(kMain)),
+              IsEmpty());
+  // The body's x is a vec2: returning it from a float function is still an error.
+  EXPECT_THAT(Check(Stage::Vertex, "float f(float x) {\n  vec2 x = vec2(2.0);\n  return x;\n}\n" +
+                                       std::string(kMain)),
+              ElementsAre("3:3 glsl-type-mismatch"));
+  // A duplicate parameter stays an error (glslang's message has no column: the first 'x').
+  EXPECT_THAT(
+      Check(Stage::Vertex, "float f(float x, float x) { return x; }\n" + std::string(kMain)),
+      ElementsAre("1:15 glsl-redefinition"));
+}
+
+// 4.1.8: embedded structure definitions, their names scoped as the outer structure's.
+TEST(Strict, EmbeddedStructDefinitions) {
+  EXPECT_THAT(
+      Check(Stage::Vertex, "struct O { struct I { float x; } i; };\nI j;\n" + std::string(kMain)),
+      IsEmpty());
+  EXPECT_THAT(
+      Check(Stage::Vertex, "struct I { float y; };\nstruct O { struct I { float x; } i; };\n" +
+                               std::string(kMain)),
+      ElementsAre("2:19 glsl-redefinition"));
+}
+
+// 5.5, 5.6: a constant index past a vector or matrix is undefined behaviour: a warning.
+TEST(Strict, ConstantIndexPastVectorWarns) {
+  const char* shader =
+      "uniform vec2 v;\nuniform mat3 m;\nvoid main() {\n  gl_Position = "
+      "vec4(v[2] + m[3][0]);\n}\n";
+  EXPECT_THAT(Check(Stage::Vertex, shader), IsEmpty());
+  // glslang's messages have no column: both at the first '[' of the line.
+  EXPECT_THAT(Check(Stage::Vertex, shader, compiler::Severity::Warning),
+              ElementsAre("4:23 glsl-index-out-of-range", "4:23 glsl-index-out-of-range"));
+}
+
+// 5.7-5.9: whole arrays are no operands of '=', '==', '!=' or '?:'; structures with array
+// fields are.
+TEST(Strict, WholeArraysAreNoOperands) {
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "struct S { float a[2]; };\nuniform S u;\nvoid main() {\n  S s = u;\n  bool "
+                    "e = s == u;\n  gl_FragColor = vec4(s.a[0]);\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(
+      Check(Stage::Fragment,
+            "uniform bool p;\nvoid main() {\n  float a[2];\n  float b[2];\n  a = b;\n  "
+            "bool e = a != b;\n  gl_FragColor = vec4((p ? a : b)[0]);\n}\n"),
+      ElementsAre("5:5 glsl-array-operand", "6:14 glsl-array-operand", "7:26 glsl-array-operand"));
+}
+
+// Chapter 9: the third operand of ?: is a conditional_expression.
+TEST(Strict, AssignmentInThirdOperandOfConditional) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "uniform bool p;\nvoid main() {\n  float x;\n  p ? x = 1.0 : "
+                    "(x = 2.0);\n  gl_Position = vec4(x);\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "uniform bool p;\nvoid main() {\n  float x;\n  p ? x = 1.0 : "
+                    "x = 2.0;\n  gl_Position = vec4(x);\n}\n"),
+              ElementsAre("4:19 glsl-conditional-assignment"));
+}
+
+// 7.6: gl_TexCoord has at most gl_MaxTextureCoords elements.
+TEST(Strict, TexCoordIndexBelowMax) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "void main() {\n  gl_TexCoord[gl_MaxTextureCoords - 1] = "
+                    "vec4(0.0);\n  gl_Position = vec4(0.0);\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "void main() {\n  gl_TexCoord[gl_MaxTextureCoords] = "
+                    "vec4(0.0);\n  gl_Position = vec4(0.0);\n}\n"),
+              ElementsAre("2:14 glsl-texcoord-index"));
+}
+
+// 7.2: assigning both gl_FragColor and gl_FragData is an error, reading one of them is not.
+TEST(Strict, FragColorAndFragDataAssigned) {
+  EXPECT_THAT(
+      Check(Stage::Fragment, "void main() {\n  gl_FragData[0] = vec4(0.5) + gl_FragColor;\n}\n"),
+      IsEmpty());
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "void set(out vec4 c) { c = vec4(1.0); }\nvoid main() {\n  "
+                    "set(gl_FragColor);\n  gl_FragData[0] = vec4(0.5);\n}\n"),
+              ElementsAre("4:3 glsl-link-fragcolor-fragdata"));
+}
+
+// 3.3: #if and #elif operands are integer literals and 'defined' (after macro expansion).
+TEST(Strict, ConditionalOperandsAreMacrosOrLiterals) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#define A 1\n#if A && defined(A) || defined B\n#elif 0x10 "
+                    "> 010\n#endif\n#ifdef NOPE\n#if NOPE2\n#endif\n#endif\n/*\n#if "
+                    "Q\n*/\n" +
+                        std::string(kMain)),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#define B A + C\n#define A 1\n#if UNDEFINED\n#elif B\n#endif\n#if 1\n#elif "
+                    "SKIPPED\n#endif\n" +
+                        std::string(kMain)),
+              ElementsAre("3:5 glsl-if-undefined-identifier", "4:7 glsl-if-undefined-identifier"));
+}
+
 // glslang's own diagnostics keep their line and get the column of the token they quote.
 TEST(Diagnostics, ColumnFromQuotedToken) {
   EXPECT_THAT(Check(Stage::Vertex, "void main() {\n  gl_Position = vec4(foo);\n}\n"),

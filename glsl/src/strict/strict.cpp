@@ -1,6 +1,8 @@
 // Runs the strictness checks in chapter order.
 #include "strict.h"
 
+#include <glslang/MachineIndependent/localintermediate.h>
+
 #include <cctype>
 
 namespace arbiter::glsl {
@@ -28,11 +30,50 @@ bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::strin
   return false;
 }
 
+std::string BlankComments(std::string_view text) {
+  std::string out(text);
+  for (size_t i = 0; i + 1 < out.size(); ++i) {
+    if (out[i] == '/' && out[i + 1] == '/') {
+      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+    } else if (out[i] == '/' && out[i + 1] == '*') {
+      out[i] = out[i + 1] = ' ';
+      i += 2;
+      while (i + 1 < out.size() && !(out[i] == '*' && out[i + 1] == '/')) {
+        if (out[i] != '\n') out[i] = ' ';
+        ++i;
+      }
+      if (i + 1 < out.size()) out[i] = out[i + 1] = ' ';
+    }
+  }
+  return out;
+}
+
+bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
+                const compiler::SourceFile** file, compiler::Range* range) {
+  if (loc.string < 0 || static_cast<size_t>(loc.string) >= ctx.sources.size() || loc.line < 1) {
+    return false;
+  }
+  *file = ctx.sources[static_cast<size_t>(loc.string)];
+  if (static_cast<uint32_t>(loc.line) > (*file)->line_count()) return false;
+  uint32_t begin = (*file)->LineStart(static_cast<uint32_t>(loc.line)) +
+                   static_cast<uint32_t>(loc.column > 0 ? loc.column - 1 : 0);
+  if (begin + length > (*file)->text().size()) return false;
+  *range = {begin, static_cast<uint32_t>(begin + length)};
+  return true;
+}
+
 void RunStrictChecks(const StrictContext& ctx) {
   CheckPreprocessor(ctx);
+  CheckConditionals(ctx);
   CheckQualifiers(ctx);
   CheckConstInitializers(ctx);
+  CheckExpressions(ctx);
   CheckBuiltinVariables(ctx);
+}
+
+void RunLinkStrictChecks(const StrictContext& ctx) {
+  CheckFragmentOutputs(ctx);
+  CheckPositionWritten(ctx);
 }
 
 }  // namespace arbiter::glsl

@@ -2,6 +2,7 @@
 // enforce, one file per chapter (strict_<chapter>.cpp), run in a fixed order.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -12,37 +13,70 @@
 
 namespace glslang {
 class TIntermediate;
-}
+struct TSourceLoc;
+}  // namespace glslang
 
 namespace arbiter::glsl {
+
+struct FragmentOutputWrites {
+  bool color = false;
+  bool data = false;
+  const compiler::SourceFile* data_file = nullptr;  // the first assignment to gl_FragData
+  compiler::Range data_range;
+};
 
 struct StrictContext {
   Stage stage;
   const std::vector<const compiler::SourceFile*>& sources;
   compiler::DiagnosticSink* sink;
   const glslang::TIntermediate& ast;  // the compiled shader
+  bool link;                          // CheckOptions::link: the link step runs
   bool linked;                        // the link step ran and succeeded
   bool as_program;                    // CheckOptions::link_as_program
+  // Whether the shader assigns gl_FragColor and gl_FragData (7.2): found in the whole AST by
+  // CheckBuiltinVariables, judged after the link step by CheckFragmentOutputs.
+  FragmentOutputWrites* fragment_writes;
 };
 
 // Chapter 3.3, the preprocessor: #version below 110, #extension placement, #pragma
 // optimize/debug inside functions, #line operands.
 void CheckPreprocessor(const StrictContext& ctx);  // strict_preprocessor.cpp
+// Chapter 3.3, #if and #elif: operands are integer literals and 'defined' only.
+void CheckConditionals(const StrictContext& ctx);  // strict_conditionals.cpp
 // Chapter 4, qualifiers: varying types, constant global initializers.
 void CheckQualifiers(const StrictContext& ctx);  // strict_qualifiers.cpp
 // Chapter 4.3.2: no function calls in const initializers.
 void CheckConstInitializers(const StrictContext& ctx);  // strict_const.cpp
 
-// Chapter 7, built-in variables: a vertex shader must write gl_Position (checked when
-// linking, as drivers do).
+// Chapter 5, operators and expressions: whole arrays as operands of '=', '==', '!=' and
+// '?:'; an unparenthesized assignment as the third operand of '?:'.
+void CheckExpressions(const StrictContext& ctx);  // strict_expressions.cpp
+
+// Chapter 7, built-in variables: constant gl_TexCoord indices within gl_MaxTextureCoords;
+// with the link step, not both gl_FragColor and gl_FragData assigned.
 void CheckBuiltinVariables(const StrictContext& ctx);  // strict_builtins.cpp
+// Chapter 7.1: a vertex shader must write gl_Position (checked when linking, as drivers do).
+void CheckPositionWritten(const StrictContext& ctx);  // strict_builtins.cpp
+// Chapter 7.2: not both gl_FragColor and gl_FragData assigned (a link error, as glslang's).
+void CheckFragmentOutputs(const StrictContext& ctx);  // strict_builtins.cpp
 
 // The whole-word occurrence of `name` on a line that also holds `keyword` (a declaration),
 // in any source; false when there is none. For rules whose AST node has no usable location.
 bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
                      const compiler::SourceFile** file, compiler::Range* range);
 
-// Runs every chapter's checks.
+// The text with comments replaced by blanks (newlines kept), so offsets stay valid.
+std::string BlankComments(std::string_view text);
+
+// The range of a glslang source location (line and column in string `loc.string`), `length`
+// bytes long; false when the location is not in the sources.
+bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
+                const compiler::SourceFile** file, compiler::Range* range);
+
+// Runs every chapter's checks on the AST of the whole shader, before glslang's link step
+// removes the functions main() does not call.
 void RunStrictChecks(const StrictContext& ctx);
+// The checks that judge the linked shader.
+void RunLinkStrictChecks(const StrictContext& ctx);
 
 }  // namespace arbiter::glsl

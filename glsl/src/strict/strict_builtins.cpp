@@ -1,8 +1,16 @@
-// GLSL 1.10 chapter 7 (built-in variables): "All executions of a well-formed vertex shader
-// must write a value into [gl_Position]" (7.1). glslang accepts a vertex shader that never
-// writes it; drivers (Mesa) refuse to link one. The spec only allows a diagnostic, so it is
-// a warning for a shader and an error when judged as a program. Checked from the AST.
+// GLSL 1.10 chapter 7 (built-in variables), checked from the AST:
+// - 7.1: "All executions of a well-formed vertex shader must write a value into
+//   [gl_Position]". glslang accepts a vertex shader that never writes it; drivers (Mesa)
+//   refuse to link one. The spec only allows a diagnostic, so it is a warning for a shader
+//   and an error when judged as a program.
+// - 7.2: "If a shader statically assigns a value to gl_FragColor, it may not assign a value
+//   to any element of gl_FragData". glslang's link step rejects any use of both, reads
+//   included (info_log.cpp drops that message); this rule counts assignments.
+// - 7.6: "varying vec4 gl_TexCoord[]; // at most will be gl_MaxTextureCoords". glslang sizes
+//   the unsized array from its largest constant index without bounding it.
+#include <fmt/format.h>
 #include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
 
 #include "strict.h"
 
@@ -34,6 +42,71 @@ bool IsPosition(glslang::TIntermTyped* node) {
   return symbol != nullptr && symbol->getName() == "gl_Position";
 }
 
+bool IsAssignment(glslang::TOperator op) {
+  return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign;
+}
+
+// Assignments to gl_FragColor and gl_FragData, as such or through an out or inout argument
+// of a user function, and constant gl_TexCoord indices past gl_MaxTextureCoords.
+class BuiltinUses : public glslang::TIntermTraverser {
+ public:
+  explicit BuiltinUses(const StrictContext& ctx) : ctx_(ctx) {}
+
+  bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
+    if (IsAssignment(node->getOp())) Written(node->getLeft());
+    if (node->getOp() == glslang::EOpIndexDirect) CheckTexCoordIndex(node);
+    return true;
+  }
+
+  bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
+    if (node->getOp() != glslang::EOpFunctionCall) return true;
+    const glslang::TQualifierList& qualifiers = node->getQualifierList();
+    for (size_t i = 0; i < node->getSequence().size(); ++i) {
+      glslang::TIntermTyped* arg = node->getSequence()[i]->getAsTyped();
+      bool out = i >= qualifiers.size() || qualifiers[i] == glslang::EvqOut ||
+                 qualifiers[i] == glslang::EvqInOut;
+      if (arg != nullptr && out) Written(arg);
+    }
+    return true;
+  }
+
+ private:
+  void Written(glslang::TIntermTyped* target) {
+    const glslang::TIntermSymbol* symbol = BaseSymbol(target);
+    if (symbol == nullptr) return;
+    FragmentOutputWrites& writes = *ctx_.fragment_writes;
+    if (symbol->getName() == "gl_FragColor") writes.color = true;
+    if (symbol->getName() == "gl_FragData" && !writes.data) {
+      writes.data = true;
+      RangeOfLoc(ctx_, symbol->getLoc(), std::string_view("gl_FragData").size(), &writes.data_file,
+                 &writes.data_range);
+    }
+  }
+
+  void CheckTexCoordIndex(glslang::TIntermBinary* node) {
+    const glslang::TIntermSymbol* array = node->getLeft()->getAsSymbolNode();
+    const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
+    if (array == nullptr || index == nullptr || array->getName() != "gl_TexCoord") return;
+    int max = GetDefaultResources()->maxTextureCoords;
+    int value = index->getConstArray()[0].getIConst();
+    if (value < max) return;
+    const compiler::SourceFile* file = ctx_.sources.front();
+    compiler::Range range{0, 0};
+    // glslang places the index node at the index expression.
+    if (!RangeOfLoc(ctx_, node->getLoc(), 1, &file, &range)) {
+      file = ctx_.sources.front();
+      range = {0, 0};
+    }
+    ctx_.sink->Report(Info(Diag::TexCoordIndex), file, range,
+                      fmt::format("gl_TexCoord index {} is past the last texture coordinate "
+                                  "set: gl_TexCoord has at most gl_MaxTextureCoords ({}) "
+                                  "elements (GLSL 1.10 section 7.6)",
+                                  value, max));
+  }
+
+  const StrictContext& ctx_;
+};
+
 // Finds any write of gl_Position: an assignment, or an argument of a user function (which
 // may be an out parameter; counted as a write, erring towards acceptance).
 class PositionWrites : public glslang::TIntermTraverser {
@@ -62,6 +135,22 @@ class PositionWrites : public glslang::TIntermTraverser {
 }  // namespace
 
 void CheckBuiltinVariables(const StrictContext& ctx) {
+  TIntermNode* root = ctx.ast.getTreeRoot();
+  if (root == nullptr) return;
+  BuiltinUses uses(ctx);
+  root->traverse(&uses);
+}
+
+void CheckFragmentOutputs(const StrictContext& ctx) {
+  const FragmentOutputWrites& writes = *ctx.fragment_writes;
+  if (ctx.stage != Stage::Fragment || !ctx.link || !writes.color || !writes.data) return;
+  const compiler::SourceFile* file = writes.data_file;
+  if (file == nullptr) file = ctx.sources.front();
+  ctx.sink->Report(Info(Diag::LinkFragColorAndData), file, writes.data_range,
+                   "cannot use both gl_FragColor and gl_FragData");
+}
+
+void CheckPositionWritten(const StrictContext& ctx) {
   if (ctx.stage != Stage::Vertex || !ctx.linked) return;
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;

@@ -43,25 +43,6 @@ std::vector<Word> Words(std::string_view line) {
   return out;
 }
 
-// The text with comments replaced by blanks (newlines kept), so offsets stay valid.
-std::string BlankComments(std::string_view text) {
-  std::string out(text);
-  for (size_t i = 0; i + 1 < out.size(); ++i) {
-    if (out[i] == '/' && out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-    } else if (out[i] == '/' && out[i + 1] == '*') {
-      out[i] = out[i + 1] = ' ';
-      i += 2;
-      while (i + 1 < out.size() && !(out[i] == '*' && out[i + 1] == '/')) {
-        if (out[i] != '\n') out[i] = ' ';
-        ++i;
-      }
-      if (i + 1 < out.size()) out[i] = out[i + 1] = ' ';
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 void CheckPreprocessor(const StrictContext& ctx) {

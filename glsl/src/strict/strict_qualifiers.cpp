@@ -7,6 +7,7 @@
 
 #include <cctype>
 
+#include "../source_text.h"
 #include "strict.h"
 
 namespace arbiter::glsl {
@@ -21,20 +22,6 @@ bool IsVarying(const glslang::TQualifier& q, Stage stage) {
 bool IsVaryingType(const glslang::TType& type) {
   if (type.getBasicType() != glslang::EbtFloat) return false;
   if (type.isMatrix()) return type.getMatrixCols() == type.getMatrixRows();
-  return true;
-}
-
-// The range of a glslang source location (1-based line and column of string `string`).
-bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
-                const compiler::SourceFile** file, compiler::Range* range) {
-  if (loc.string < 0 || static_cast<size_t>(loc.string) >= ctx.sources.size() || loc.line < 1) {
-    return false;
-  }
-  *file = ctx.sources[static_cast<size_t>(loc.string)];
-  if (static_cast<uint32_t>(loc.line) > (*file)->line_count()) return false;
-  uint32_t begin = (*file)->LineStart(static_cast<uint32_t>(loc.line)) +
-                   static_cast<uint32_t>(loc.column > 0 ? loc.column - 1 : 0);
-  *range = {begin, static_cast<uint32_t>(begin + length)};
   return true;
 }
 
@@ -96,9 +83,9 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
       NonConstantUse finder;
       assign->getRight()->traverse(&finder);
       const glslang::TIntermSymbol* target = assign->getLeft()->getAsSymbolNode();
-      std::string name = target ? std::string(target->getName().c_str()) : "a global";
+      std::string name = target ? RestoreSpelling(target->getName().c_str()) : "a global";
       if (finder.found == nullptr && finder.call != nullptr) {
-        std::string callee(finder.call->getName().c_str());
+        std::string callee = RestoreSpelling(finder.call->getName().c_str());
         callee = callee.substr(0, callee.find('('));
         Report(ctx, Diag::GlobalInitializer, finder.call->getLoc(), callee, "=",
                fmt::format("the initializer of global '{}' calls '{}'; in GLSL 1.10 global "
@@ -107,7 +94,7 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
         continue;
       }
       if (finder.found == nullptr) continue;
-      std::string used(finder.found->getName().c_str());
+      std::string used = RestoreSpelling(finder.found->getName().c_str());
       Report(ctx, Diag::GlobalInitializer, finder.found->getLoc(), used, "=",
              fmt::format("the initializer of global '{}' reads {} '{}'; in GLSL 1.10 global "
                          "initializers must be constant expressions (assign it in main())",
@@ -130,7 +117,7 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
           ctx.stage == Stage::Vertex && symbol->getQualifier().storage == glslang::EvqVaryingIn;
       if (!attribute && !IsVarying(symbol->getQualifier(), ctx.stage)) continue;
       if (IsVaryingType(symbol->getType())) continue;
-      std::string name(symbol->getName().c_str());
+      std::string name = RestoreSpelling(symbol->getName().c_str());
       std::string_view what = attribute ? "attribute" : "varying";
       Report(ctx, Diag::VaryingType, symbol->getLoc(), name, what,
              fmt::format("{} '{}' has type '{}'; GLSL 1.10 {}s are float, vec2, vec3, vec4, "

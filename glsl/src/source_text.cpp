@@ -1,0 +1,222 @@
+// The text glslang is given (source_text.h). Every rewrite keeps the line of each token, and
+// its column where it can: glslang's messages carry lines only, and the strictness layer
+// checks that a location it reads from the AST names the token it expects.
+#include "source_text.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <vector>
+
+namespace arbiter::glsl {
+namespace {
+
+// Words that GLSL 1.10 does not reserve (3.6; the 1.10 change log: "the listed keywords and
+// reserved words are the only ones") but glslang 12 does for every version, and the name
+// glslang sees instead: as long, and containing "__", which 3.6 reserves, so no valid 1.10
+// shader declares it (the strictness layer rejects a user's '__' name from the user's text).
+struct Substitute {
+  std::string_view word;
+  std::string_view glslang;
+};
+constexpr Substitute kSubstitutes[] = {
+    {"active", "ac____"}, {"case", "ca__"},           {"common", "co____"},
+    {"filter", "fi____"}, {"partition", "pa_______"},
+};
+
+bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Replaces whole words of `text` by same-length words.
+void ReplaceWords(std::string* text, bool to_glslang) {
+  std::string& s = *text;
+  for (size_t i = 0; i < s.size();) {
+    if (!IsIdentChar(s[i])) {
+      ++i;
+      continue;
+    }
+    size_t start = i;
+    while (i < s.size() && IsIdentChar(s[i])) ++i;
+    std::string_view word(s.data() + start, i - start);
+    for (const Substitute& sub : kSubstitutes) {
+      std::string_view from = to_glslang ? sub.word : sub.glslang;
+      std::string_view to = to_glslang ? sub.glslang : sub.word;
+      if (word == from) {
+        s.replace(start, from.size(), to);
+        break;
+      }
+    }
+  }
+}
+
+struct Token {
+  std::string_view text;
+  size_t offset;
+};
+
+// Identifiers, numbers and single punctuation characters, without comments and
+// preprocessor lines.
+std::vector<Token> Tokens(std::string_view text) {
+  std::vector<Token> out;
+  bool line_start = true;
+  for (size_t i = 0; i < text.size();) {
+    char c = text[i];
+    if (c == '\n') {
+      line_start = true;
+      ++i;
+    } else if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+    } else if (line_start && c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (text.substr(i, 2) == "//") {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (text.substr(i, 2) == "/*") {
+      size_t end = text.find("*/", i + 2);
+      i = end == std::string_view::npos ? text.size() : end + 2;
+    } else {
+      line_start = false;
+      size_t start = i++;
+      if (IsIdentChar(c)) {
+        while (i < text.size() && (IsIdentChar(text[i]) || text[i] == '.')) {
+          if (text[i] == '.' && IsIdentStart(c)) break;  // a field selection
+          ++i;
+        }
+      }
+      out.push_back({text.substr(start, i - start), start});
+    }
+  }
+  return out;
+}
+
+// The index of the token that closes the bracket opened at `open`; tokens.size() if none.
+size_t Matching(const std::vector<Token>& tokens, size_t open) {
+  char o = tokens[open].text[0];
+  char c = o == '(' ? ')' : '}';
+  int depth = 0;
+  for (size_t i = open; i < tokens.size(); ++i) {
+    if (tokens[i].text[0] == o && tokens[i].text.size() == 1) ++depth;
+    if (tokens[i].text[0] == c && tokens[i].text.size() == 1 && --depth == 0) return i;
+  }
+  return tokens.size();
+}
+
+// The parameter names of the list between the parentheses at `open` and `close`: in each
+// parameter, the last identifier before any '[', when the parameter has a type before it.
+std::set<std::string_view> ParameterNames(const std::vector<Token>& tokens, size_t open,
+                                          size_t close) {
+  std::set<std::string_view> names;
+  size_t words = 0;
+  std::string_view last;
+  bool in_size = false;
+  for (size_t i = open + 1; i <= close; ++i) {
+    std::string_view t = tokens[i].text;
+    if (t == "," || i == close) {
+      if (words >= 2) names.insert(last);
+      words = 0;
+      in_size = false;
+    } else if (t == "[") {
+      in_size = true;
+    } else if (!in_size && IsIdentStart(t[0])) {
+      ++words;
+      last = t;
+    }
+  }
+  return names;
+}
+
+// Keywords after which a name is an operand, not a declarator.
+bool IsStatementKeyword(std::string_view t) { return t == "return" || t == "else" || t == "do"; }
+
+// Whether the body between the braces at `open` and `close` declares one of `names` in its
+// own scope: a name after a type (an identifier) or after a ',' outside parentheses and
+// nested braces. A comma expression may match too: nesting the body is then harmless.
+bool RedeclaresParameter(const std::vector<Token>& tokens, size_t open, size_t close,
+                         const std::set<std::string_view>& names) {
+  int braces = 0;
+  int parens = 0;
+  for (size_t i = open + 1; i < close; ++i) {
+    std::string_view t = tokens[i].text;
+    if (t == "{") ++braces;
+    if (t == "}") --braces;
+    if (t == "(" || t == "[") ++parens;
+    if (t == ")" || t == "]") --parens;
+    if (braces != 0 || parens != 0 || !names.count(t)) continue;
+    std::string_view before = tokens[i - 1].text;
+    if (before == "," || (IsIdentStart(before[0]) && !IsStatementKeyword(before))) return true;
+  }
+  return false;
+}
+
+// Adds `brace` next to the one at `at` with only white space between them: in place of a
+// blank after it (or before it), else before the end of its line, else right after it
+// (the one case that moves the rest of that line by a column).
+void DoubleBrace(std::string* text, size_t at, char brace) {
+  std::string& s = *text;
+  auto blank = [&](size_t i) { return i < s.size() && (s[i] == ' ' || s[i] == '\t'); };
+  if (blank(at + 1)) {
+    s[at + 1] = brace;
+  } else if (at > 0 && blank(at - 1)) {
+    s[at - 1] = brace;
+  } else {
+    s.insert(at + 1, 1, brace);
+  }
+}
+
+// GLSL 1.10 4.2: "A function body has a scope nested inside the function's definition", so
+// a body may redeclare a parameter; glslang 12 (as GLSL 1.30) puts both in one scope. Each
+// function body that redeclares a parameter gets a second pair of braces, which opens the
+// nested scope 1.10 describes. Bodies are found at file level as a '{' after ')'; a text
+// whose braces do not balance outside directives is left as it is.
+void NestFunctionBodies(std::string* text) {
+  std::vector<Token> tokens = Tokens(*text);
+  std::vector<std::pair<size_t, size_t>> bodies;  // offsets of '{' and '}'
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    std::string_view t = tokens[i].text;
+    if (t == "}") return;  // unbalanced
+    if (t != "{") continue;
+    size_t close = Matching(tokens, i);
+    if (close == tokens.size()) return;
+    if (i > 0 && tokens[i - 1].text == ")") {
+      size_t open_paren = i - 1;
+      int depth = 0;
+      while (true) {
+        if (tokens[open_paren].text == ")") ++depth;
+        if (tokens[open_paren].text == "(" && --depth == 0) break;
+        if (open_paren == 0) return;
+        --open_paren;
+      }
+      std::set<std::string_view> names = ParameterNames(tokens, open_paren, i - 1);
+      if (!names.empty() && RedeclaresParameter(tokens, i, close, names)) {
+        bodies.emplace_back(tokens[i].offset, tokens[close].offset);
+      }
+    }
+    i = close;
+  }
+  // From the end, so that an inserted brace moves no offset still to be used.
+  std::reverse(bodies.begin(), bodies.end());
+  for (const auto& [open, close] : bodies) {
+    DoubleBrace(text, close, '}');
+    DoubleBrace(text, open, '{');
+  }
+}
+
+}  // namespace
+
+std::string PrepareForGlslang(std::string_view text) {
+  std::string out(text);
+  // 3.1 counts vertical tab and form feed as white space; glslang 12 rejects them.
+  for (char& c : out) {
+    if (c == '\v' || c == '\f') c = ' ';
+  }
+  ReplaceWords(&out, /*to_glslang=*/true);
+  NestFunctionBodies(&out);
+  return out;
+}
+
+std::string RestoreSpelling(std::string_view text) {
+  std::string out(text);
+  ReplaceWords(&out, /*to_glslang=*/false);
+  return out;
+}
+
+}  // namespace arbiter::glsl

@@ -1,0 +1,18 @@
+// The text glslang is given: the user's source rewritten where glslang 12 reads GLSL 1.10
+// differently, keeping every line and column of the user's tokens.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace arbiter::glsl {
+
+// The source as glslang must see it: vertical tab and form feed blanked (1.10 3.1 counts
+// them as white space), words that 1.10 does not reserve but glslang 12 does renamed (3.6),
+// and function bodies that redeclare a parameter nested one scope deeper (4.2).
+std::string PrepareForGlslang(std::string_view text);
+
+// The user's spelling of glslang's text (a message, a symbol name): undoes the renaming.
+std::string RestoreSpelling(std::string_view text);
+
+}  // namespace arbiter::glsl
