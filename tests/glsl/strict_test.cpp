@@ -208,6 +208,49 @@ TEST(Strict, ConditionalOperandsAreMacrosOrLiterals) {
               ElementsAre("3:5 glsl-if-undefined-identifier", "4:7 glsl-if-undefined-identifier"));
 }
 
+// 4.1.9, 4.3.3: an array size is an integral constant expression, read operand by operand:
+// integer literals and const int variables, through operators and constructors, no calls.
+TEST(Strict, ArraySizesAreIntegralConstantExpressions) {
+  const char* kFrag = "void main() { gl_FragColor = vec4(0.0); }\n";
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "#define N 3\n#define M N\nconst int n = 2;\nstruct S { float f[int(n)]; };\n"
+                    "float a[int(3)], b[2 + 1], c[n * 2], d[1 > 0 ? 2 : 3], e[ivec2(n, 3).y];\n"
+                    "float g[gl_MaxLights], h[int(M)], k[0x2], l[__LINE__];\n"
+                    "void f(float p[int(2)]) { const float n = 1.0; { const int n = 2; "
+                    "float q[int(n)]; } }\n" +
+                        std::string(kFrag)),
+              IsEmpty());
+  EXPECT_THAT(
+      Check(Stage::Fragment,
+            "const float f = 2.0;\nconst bool b = true;\nconst ivec2 v = ivec2(2, 3);\n"
+            "float a[int(2.0)], a2[int(2e0)];\nfloat c[int(f)];\nfloat d[true ? 2 : 3];\n"
+            "float e[int(b)];\nfloat g[int(abs(-2.0))];\nfloat h[v.y];\n"
+            "struct S { float m[int(.5e1)]; } s[int(true) + 1];\n"
+            "void p(float x[int(f)]);\n" +
+                std::string(kFrag)),
+      ElementsAre("4:13 glsl-array-size-not-integral", "4:27 glsl-array-size-not-integral",
+                  "5:13 glsl-array-size-not-integral", "6:9 glsl-array-size-not-integral",
+                  "7:13 glsl-array-size-not-integral", "8:13 glsl-array-size-not-integral",
+                  "9:9 glsl-array-size-not-integral", "10:24 glsl-array-size-not-integral",
+                  "10:40 glsl-array-size-not-integral", "11:20 glsl-array-size-not-integral"));
+  // Locals, and a const float shadowed by a const int.
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "const int n = 2;\nvoid main() {\n  const float n = 2.0;\n  float a[int(n)];\n"
+                    "  gl_FragColor = vec4(0.0);\n}\n"),
+              ElementsAre("4:15 glsl-array-size-not-integral"));
+  // An object-like macro is expanded and reported at its name; a function-like macro and an
+  // undecidable #if leave the size unjudged; a group known to be false is skipped.
+  EXPECT_THAT(
+      Check(Stage::Fragment,
+            "#define TWO 2.0\n#define F(x) x\nfloat a[int(TWO)];\nfloat b[int(F(2.0))];\n"
+            "#if __VERSION__ >= 110\nfloat c[int(2.0)];\n#endif\n#if 0\nfloat d[int(2.0)];\n"
+            "#else\nfloat d[2];\n#endif\n#ifdef GL_ES\nconst int k = 2;\n#else\nconst float "
+            "k = 2.0;\n#endif\nfloat e[int(k)];\n#if !defined(TWO)\nfloat g[int(2.0)];\n"
+            "#elif defined TWO\nfloat g[int(1.0)];\n#endif\n" +
+                std::string(kFrag)),
+      ElementsAre("3:13 glsl-array-size-not-integral", "22:13 glsl-array-size-not-integral"));
+}
+
 // glslang's own diagnostics keep their line and get the column of the token they quote.
 TEST(Diagnostics, ColumnFromQuotedToken) {
   EXPECT_THAT(Check(Stage::Vertex, "void main() {\n  gl_Position = vec4(foo);\n}\n"),

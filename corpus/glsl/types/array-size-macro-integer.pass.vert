@@ -1,0 +1,15 @@
+// [config]
+// expect_result: pass
+// glsl_version: 1.10
+// [end config]
+// 4.1.9 "When an array size is specified in a declaration, it must be an integral constant expression (see Section 4.3.3) greater than zero."
+// 4.3.3 "An integral constant expression can be one of: a literal integer value; a global or local scalar integer variable qualified as const, not including function parameters qualified as const; an expression whose operands are integral constant expressions, including constructors, but excluding function calls." (after macro expansion the operand of the constructor is the literal integer 3)
+// 3.3 "#define and #undef functionality are defined as is standard for C++ preprocessors for macro definitions both with and without macro parameters."
+#version 110
+#define SIZE 3
+#define ALSO SIZE
+float a[int(SIZE)], b[ALSO + 1];
+void main()
+{
+    gl_Position = vec4(0.0);
+}
