@@ -12,6 +12,8 @@
 namespace arbiter::cli {
 // cmd_link.cpp: adds the `link` subcommand; the returned function runs it once parsed.
 std::function<int()> AddLinkCommand(CLI::App* app);
+// cmd_exec.cpp: adds the `exec` subcommand.
+std::function<int()> AddExecCommand(CLI::App* app);
 }  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
@@ -32,6 +34,7 @@ int main(int argc, char** argv) {
   arbiter::cli::AddCommonOptions(info, &info_options, /*diagnostics=*/false);
 
   std::function<int()> run_link = arbiter::cli::AddLinkCommand(&app);
+  std::function<int()> run_exec = arbiter::cli::AddExecCommand(&app);
 
   try {
     // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
@@ -48,5 +51,6 @@ int main(int argc, char** argv) {
   if (check->parsed()) return arbiter::cli::RunCheck(check_options);
   if (info->parsed()) return arbiter::cli::RunInfo(info_options);
   if (app.get_subcommand("link")->parsed()) return run_link();
+  if (app.get_subcommand("exec")->parsed()) return run_exec();
   return static_cast<int>(Exit::Usage);
 }

@@ -176,4 +176,28 @@ std::string BindingName(const Binding& b, ProgramKind kind) {
   return "?";
 }
 
+int GenericAttribSlot(const Binding& b) {
+  switch (b.vertex_attrib) {
+    case VertexAttrib::Position:
+      return 0;
+    case VertexAttrib::Weight:
+      return b.index == 0 ? 1 : -1;
+    case VertexAttrib::Normal:
+      return 2;
+    case VertexAttrib::Color:
+      return 3;
+    case VertexAttrib::SecondaryColor:
+      return 4;
+    case VertexAttrib::FogCoord:
+      return 5;
+    case VertexAttrib::TexCoord:
+      return 8 + b.index;
+    case VertexAttrib::MatrixIndex:
+      return -1;
+    case VertexAttrib::Generic:
+      return b.index;
+  }
+  return -1;
+}
+
 }  // namespace arbiter::arbvp

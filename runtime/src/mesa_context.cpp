@@ -253,21 +253,10 @@ std::unique_ptr<MesaContext> CreateMesaContext(const MesaOptions& options, std::
   // Mesa reads its configuration from the environment; these are the only two settings.
   setenv("GALLIUM_DRIVER", options.driver.c_str(), 1);
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-  const int attribs[] = {OSMESA_FORMAT,
-                         OSMESA_RGBA,
-                         OSMESA_DEPTH_BITS,
-                         0,
-                         OSMESA_STENCIL_BITS,
-                         0,
-                         OSMESA_ACCUM_BITS,
-                         0,
-                         OSMESA_PROFILE,
-                         OSMESA_COMPAT_PROFILE,
-                         0};
   // Mesa (and LLVM with it) is loaded only now, on the first context.
   const OsMesaLibrary* lib = LoadOsMesa(error);
   if (lib == nullptr) return nullptr;
-  OSMesaContext context = lib->CreateContextAttribs(attribs, nullptr);
+  OSMesaContext context = CreateCompatibilityContext(*lib);
   if (context == nullptr) {
     *error = fmt::format("OSMesaCreateContextAttribs failed ({}, compatibility profile)",
                          options.driver);

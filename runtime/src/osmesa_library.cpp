@@ -50,4 +50,19 @@ const OsMesaLibrary* LoadOsMesa(std::string* error) {
   return &library;
 }
 
+OSMesaContext CreateCompatibilityContext(const OsMesaLibrary& lib) {
+  const int attribs[] = {OSMESA_FORMAT,
+                         OSMESA_RGBA,
+                         OSMESA_DEPTH_BITS,
+                         0,
+                         OSMESA_STENCIL_BITS,
+                         0,
+                         OSMESA_ACCUM_BITS,
+                         0,
+                         OSMESA_PROFILE,
+                         OSMESA_COMPAT_PROFILE,
+                         0};
+  return lib.CreateContextAttribs(attribs, nullptr);
+}
+
 }  // namespace arbiter::runtime

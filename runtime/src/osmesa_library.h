@@ -19,4 +19,8 @@ struct OsMesaLibrary {
 // Loads libOSMesa once per process; null (and `error` set) when it cannot be loaded.
 const OsMesaLibrary* LoadOsMesa(std::string* error);
 
+// A compatibility-profile RGBA context without depth, stencil or accumulation buffers (what
+// every arbiter context is; rendering goes to framebuffer objects); null on failure.
+OSMesaContext CreateCompatibilityContext(const OsMesaLibrary& lib);
+
 }  // namespace arbiter::runtime

@@ -166,30 +166,6 @@ void CheckState(const CheckContext& ctx, const Binding& b) {
   }
 }
 
-// The generic attribute a conventional one aliases (Table X.2.1), or -1.
-int AliasedGeneric(const Binding& b) {
-  switch (b.vertex_attrib) {
-    case VertexAttrib::Position:
-      return 0;
-    case VertexAttrib::Weight:
-      return b.index == 0 ? 1 : -1;
-    case VertexAttrib::Normal:
-      return 2;
-    case VertexAttrib::Color:
-      return 3;
-    case VertexAttrib::SecondaryColor:
-      return 4;
-    case VertexAttrib::FogCoord:
-      return 5;
-    case VertexAttrib::TexCoord:
-      return 8 + b.index;
-    case VertexAttrib::MatrixIndex:
-    case VertexAttrib::Generic:
-      return -1;
-  }
-  return -1;
-}
-
 // ARBvp 2.14.3.2: "A vertex program will fail to load if any GL state vector is bound
 // multiple times in a single array accessed using relative addressing or bound once in two
 // or more arrays accessed using relative addressing."
@@ -243,7 +219,7 @@ void CheckBindings(const CheckContext& ctx) {
         case BindingKind::VertexAttrib: {
           CheckVertexAttrib(ctx, b);
           bool generic = b.vertex_attrib == VertexAttrib::Generic;
-          int slot = generic ? b.index : AliasedGeneric(b);
+          int slot = GenericAttribSlot(b);
           if (slot < 0) break;
           seen[generic ? 1 : 0].emplace(slot, &b);
           auto other = seen[generic ? 0 : 1].find(slot);

@@ -174,6 +174,12 @@ struct Binding {
 // The spelling of a binding as in the specs, e.g. "state.matrix.mvp.inverse.row[2]".
 std::string BindingName(const Binding& binding, ProgramKind kind);
 
+// The generic vertex attribute a vertex attribute binding occupies: its own index for
+// vertex.attrib[n], the one a conventional attribute aliases in ARBvp table X.2.1
+// (position 0, weight 1, normal 2, colour 3, secondary colour 4, fog 5, texcoord[n] 8+n),
+// or -1 (weights beyond the first, matrix indices).
+int GenericAttribSlot(const Binding& binding);
+
 // ---------------------------------------------------------------------------------------
 // Variables.
 

@@ -1,0 +1,216 @@
+// The execution model shared by every engine (the reference interpreter in arbvp/, Mesa in
+// runtime/): the inputs one run of an ARB program (or a vertex + fragment pair) reads, and
+// the output registers it produces per input vector.
+//
+// The GL state is stored the way the state.* bindings read it (eye-space light positions,
+// clip and texgen eye planes as GL keeps them after the modelview transform), so an engine
+// that feeds GL loads the identity modelview before specifying those.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "arbiter/arbvp/ir.h"
+
+namespace arbiter::arbvp {
+
+using Vec4 = std::array<float, 4>;
+
+// ---------------------------------------------------------------------------------------
+// GL state (defaults are GL's initial state, OpenGL 2.0 tables 6.x).
+
+struct MaterialState {
+  Vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
+  Vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+  Vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
+  Vec4 emission{0.0f, 0.0f, 0.0f, 1.0f};
+  float shininess = 0.0f;
+};
+
+struct LightState {
+  Vec4 ambient{0.0f, 0.0f, 0.0f, 1.0f};
+  Vec4 diffuse{0.0f, 0.0f, 0.0f, 1.0f};                    // light 0: (1,1,1,1)
+  Vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};                   // light 0: (1,1,1,1)
+  Vec4 position{0.0f, 0.0f, 1.0f, 0.0f};                   // eye space
+  std::array<float, 3> spot_direction{0.0f, 0.0f, -1.0f};  // eye space
+  float spot_exponent = 0.0f;
+  float spot_cutoff = 180.0f;  // degrees; state.light[n].spot.direction.w is its cosine
+  float constant_attenuation = 1.0f;
+  float linear_attenuation = 0.0f;
+  float quadratic_attenuation = 0.0f;
+};
+
+struct TexGenState {
+  // Per coordinate s, t, r, q. Eye planes as GL stores them (eye space).
+  std::array<Vec4, 4> eye{Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 0, 0}, Vec4{0, 0, 0, 0}};
+  std::array<Vec4, 4> object{Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 0, 0},
+                             Vec4{0, 0, 0, 0}};
+};
+
+inline constexpr int kMaxTextureUnits = 8;  // texture coordinate sets and image units
+inline constexpr int kMaxLights = 8;
+inline constexpr int kMaxClipPlanes = 6;
+inline constexpr int kMaxProgramMatrices = 8;  // state.matrix.program[n]
+inline constexpr int kMaxGenericAttribs = 16;
+inline constexpr int kMaxProgramParams = 96;  // env and local indices accepted by the model
+
+struct GlState {
+  // Matrices as GL holds them (glm is column-major like GL). ARB reads their rows.
+  glm::mat4 modelview{1.0f};
+  glm::mat4 projection{1.0f};
+  std::array<glm::mat4, kMaxTextureUnits> texture{};  // identity after construction
+  std::array<glm::mat4, kMaxProgramMatrices> program{};
+  std::array<MaterialState, 2> material{};  // front, back
+  std::array<LightState, kMaxLights> light{};
+  Vec4 light_model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
+  std::array<TexGenState, kMaxTextureUnits> texgen{};
+  Vec4 fog_color{0.0f, 0.0f, 0.0f, 0.0f};
+  float fog_density = 1.0f;
+  float fog_start = 0.0f;
+  float fog_end = 1.0f;
+  std::array<Vec4, kMaxClipPlanes> clip_plane{};  // eye space; (0,0,0,0) initially
+  float point_size = 1.0f;
+  float point_size_min = 0.0f;
+  float point_size_max = 1.0f;  // GL's initial value is implementation-dependent; fixed here
+  float point_fade_threshold = 1.0f;
+  std::array<float, 3> point_attenuation{1.0f, 0.0f, 0.0f};
+  std::array<Vec4, kMaxTextureUnits> texenv_color{};  // (0,0,0,0) initially
+  float depth_near = 0.0f;
+  float depth_far = 1.0f;
+
+  GlState();  // sets the identity matrices and light 0's white diffuse and specular
+};
+
+// The value a state.* binding (kind State) reads from `state`: derived items (half vectors,
+// light products, scene colours, the mvp, inverses and transposes computed with GLM) as the
+// specs define them (ARBvp 2.14.3.x tables, ARBfp 3.11.3.x).
+Vec4 ReadStateBinding(const GlState& state, const Binding& binding);
+
+// ---------------------------------------------------------------------------------------
+// Textures.
+
+enum class TexDim : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect };
+enum class TexFilter : uint8_t { Nearest, Linear };
+enum class TexWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+// GL_TEXTURE_COMPARE_FUNC for depth textures in GL_COMPARE_R_TO_TEXTURE mode.
+enum class CompareFunc : uint8_t { Never, Less, Equal, Lequal, Greater, Notequal, Gequal, Always };
+// GL_DEPTH_TEXTURE_MODE: how a depth (or comparison) result d becomes RGBA.
+enum class DepthMode : uint8_t { Luminance, Intensity, Alpha };
+
+// One texture bound to one unit: a single mipmap level (minification and magnification use
+// the same filter). A program that samples a unit with a target other than the bound
+// texture's dimension reads an incomplete texture: (0,0,0,1).
+struct Texture {
+  TexDim dim = TexDim::Tex2D;
+  int width = 1;
+  int height = 1;  // 1 for 1D
+  int depth = 1;   // 3D: slices; Cube: 6 faces (+X -X +Y -Y +Z -Z), each width x height
+  // RGBA texels, x fastest, then y, then slice/face. A depth texture uses only the red
+  // channel of each texel as its depth value.
+  std::vector<float> texels;
+  TexFilter filter = TexFilter::Nearest;
+  TexWrap wrap = TexWrap::Repeat;  // s, t and r; RECT allows ClampToEdge only
+  bool depth_texture = false;
+  bool compare = false;  // GL_COMPARE_R_TO_TEXTURE (shadow targets need it)
+  CompareFunc compare_func = CompareFunc::Lequal;
+  DepthMode depth_mode = DepthMode::Luminance;
+};
+
+// ---------------------------------------------------------------------------------------
+// Per-vector inputs.
+
+// Vertex attributes as GL holds them (the current values' defaults). The program reads
+// vertex.normal as (x, y, z, 1), vertex.fogcoord as (f, 0, 0, 1) and vertex.color.secondary
+// as (r, g, b, 1) whatever the stored components (ARBvp table X.1; GL 2.0 2.7: GL has no
+// such components, and secondary A is always 1).
+struct VertexInput {
+  Vec4 position{0.0f, 0.0f, 0.0f, 1.0f};
+  Vec4 weight{1.0f, 0.0f, 0.0f, 0.0f};
+  Vec4 normal{0.0f, 0.0f, 1.0f, 1.0f};
+  Vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
+  Vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
+  Vec4 fogcoord{0.0f, 0.0f, 0.0f, 1.0f};
+  std::array<Vec4, kMaxTextureUnits> texcoord;  // (0,0,0,1)
+  Vec4 matrix_index{0.0f, 0.0f, 0.0f, 0.0f};
+  // (0,0,0,1). generic[0] is never read: vertex.attrib[0] is `position` (ARBvp 2.7).
+  std::array<Vec4, kMaxGenericAttribs> generic;
+  VertexInput();
+};
+
+// Fragment inputs of a fragment program run alone (a pair takes them from the vertex
+// program). fragment.position is not an input: every engine places vector i at the pixel
+// FragmentPixel(i), so fragment.position = (x + 0.5, y + 0.5, depth, 1) with `depth` the
+// window depth below. fragment.fogcoord reads (fogcoord, 0, 0, 1).
+struct FragmentInput {
+  Vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
+  Vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
+  std::array<Vec4, kMaxTextureUnits> texcoord;  // (0,0,0,1)
+  float fogcoord = 0.0f;
+  float depth = 0.5f;  // window z in [depth_near, depth_far]
+  FragmentInput();
+};
+
+struct InputVector {
+  VertexInput vertex;
+  FragmentInput fragment;
+};
+
+// Where vector `index` is drawn: pixel (index % kFramebufferWidth, index / kFramebufferWidth).
+inline constexpr int kFramebufferWidth = 64;
+struct Pixel {
+  int x = 0;
+  int y = 0;
+};
+inline Pixel FragmentPixel(size_t index) {
+  return {static_cast<int>(index % kFramebufferWidth), static_cast<int>(index / kFramebufferWidth)};
+}
+
+// Everything one run reads. program.env is per target; program.local per program. Indices
+// not in the maps read (0,0,0,0), GL's initial value.
+struct ProgramParameters {
+  std::map<int, Vec4> env;
+  std::map<int, Vec4> local;
+};
+
+struct ExecInputs {
+  GlState state;
+  ProgramParameters vertex_params;
+  ProgramParameters fragment_params;
+  std::map<int, Texture> textures;  // by texture image unit
+  std::vector<InputVector> vectors;
+};
+
+// ---------------------------------------------------------------------------------------
+// Results.
+
+// One result register a program wrote (a pair reports the fragment program's outputs).
+struct OutputRegister {
+  Binding binding;   // kind Result: result.color[1], result.texcoord[3], result.depth, ...
+  std::string name;  // BindingName(binding), e.g. "result.color.back.secondary"
+  Vec4 value{0.0f, 0.0f, 0.0f, 0.0f};
+  uint8_t written = 0;  // mask of the components the program wrote (bit 0 = x)
+  // Per component: empty when the specs define the value; else why not, naming the
+  // instruction, e.g. "LG2 of a non-positive value at 4:1" (interpreter only; other
+  // engines leave these empty).
+  std::array<std::string, 4> undefined;
+};
+
+struct VectorResult {
+  // In a stable order (ResultRegOrder below). Empty when the fragment was killed: GL writes
+  // nothing for it.
+  std::vector<OutputRegister> outputs;
+  bool killed = false;  // fragment programs: a KIL discarded the fragment
+  // Interpreter only: non-empty when whether a KIL discarded the fragment depends on an
+  // undefined value (then every reported output component is tagged with it too).
+  std::string kill_undefined;
+};
+
+// The stable order of result registers (position, colours, fog, point size, texcoords by
+// index, then fragment colours by index, depth): engines sort their outputs with it.
+bool ResultRegOrder(const Binding& a, const Binding& b);
+
+}  // namespace arbiter::arbvp

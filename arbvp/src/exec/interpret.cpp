@@ -1,0 +1,535 @@
+// The reference interpreter: operand loading (ARBvp 2.14.4.1-2.14.4.2, ARBfp 3.11.4.1),
+// destination update with masks and _SAT (2.14.4.3, 3.11.4.3), the program options that
+// change execution (ARB_position_invariant, ARB_fog_*), and the vertex -> fragment hand-off
+// of a pair. The operations themselves are in ops.cpp, texture sampling in sample.cpp.
+#include "arbiter/arbvp/interpret.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <map>
+#include <tuple>
+
+#include "exec/machine.h"
+#include "exec/ops.h"
+#include "exec/state_internal.h"
+
+namespace arbiter::arbvp {
+namespace {
+
+using exec::From;
+using exec::kDefined;
+using exec::kUnwritten;
+using exec::Reasons;
+using exec::Reg;
+using exec::Val;
+
+constexpr char kComponents[] = "xyzw";
+
+std::string Where(const compiler::SourceFile* source, Range range) {
+  if (!source) return {};
+  compiler::LineCol lc = source->Locate(range.begin);
+  return fmt::format(" at {}:{}", lc.line, lc.column);
+}
+
+// Result registers that are the same GL output, whatever variable or spelling bound them
+// ("result.color" and "result.color[0]" are draw buffer 0).
+using OutKey = std::tuple<ResultReg, Face, bool, int32_t>;
+OutKey KeyOf(const Binding& b) {
+  bool color = b.result == ResultReg::Color;
+  return {b.result, color ? b.face : Face::Front, color && b.secondary, b.index};
+}
+
+struct Output {
+  Binding binding;
+  Reg value{};
+  uint8_t written = 0;
+};
+using Outputs = std::map<OutKey, Output>;
+
+const Output* FindOutput(const Outputs& outputs, ResultReg reg, int32_t index = 0,
+                         bool secondary = false) {
+  auto it = outputs.find(OutKey{reg, Face::Front, secondary, index});
+  return it == outputs.end() ? nullptr : &it->second;
+}
+
+// The fragment attributes of one run: given (a fragment program alone) or produced by the
+// vertex program of a pair.
+struct FragmentSource {
+  Reg color{};
+  Reg secondary{};
+  std::array<Reg, kMaxTextureUnits> texcoord{};
+  Val fogcoord;
+  Reg position{};
+};
+
+FragmentSource FromFragmentInput(const FragmentInput& in, size_t vector_index) {
+  FragmentSource f;
+  f.color = exec::DefinedReg(in.color);
+  f.secondary = exec::DefinedReg(in.secondary_color);
+  for (size_t i = 0; i < f.texcoord.size(); ++i) f.texcoord[i] = exec::DefinedReg(in.texcoord[i]);
+  f.fogcoord = Val{in.fogcoord};
+  Pixel p = FragmentPixel(vector_index);
+  f.position = exec::DefinedReg(
+      {static_cast<float>(p.x) + 0.5f, static_cast<float>(p.y) + 0.5f, in.depth, 1.0f});
+  return f;
+}
+
+Vec4 Element(const std::array<Vec4, kMaxTextureUnits>& a, int32_t index) {
+  if (index < 0 || index >= kMaxTextureUnits) return {0.0f, 0.0f, 0.0f, 1.0f};
+  return a[static_cast<size_t>(index)];
+}
+
+// Table X.2 of ARBvp: the components each vertex attribute binding reads.
+Reg VertexAttribValue(const Binding& b, const VertexInput& in) {
+  switch (b.vertex_attrib) {
+    case VertexAttrib::Position:
+      return exec::DefinedReg(in.position);
+    case VertexAttrib::Weight:
+      // Only weights 0-3 are modelled; the others read as unsupported weights (0,0,0,1).
+      return exec::DefinedReg(b.index == 0 ? in.weight : Vec4{0.0f, 0.0f, 0.0f, 1.0f});
+    case VertexAttrib::Normal:
+      return exec::DefinedReg({in.normal[0], in.normal[1], in.normal[2], 1.0f});
+    case VertexAttrib::Color:
+      return exec::DefinedReg(in.color);
+    case VertexAttrib::SecondaryColor:
+      // GL 2.0 2.7: the secondary colour has only three-value commands; its A is always 1.
+      return exec::DefinedReg(
+          {in.secondary_color[0], in.secondary_color[1], in.secondary_color[2], 1.0f});
+    case VertexAttrib::FogCoord:
+      return exec::DefinedReg({in.fogcoord[0], 0.0f, 0.0f, 1.0f});
+    case VertexAttrib::TexCoord:
+      return exec::DefinedReg(Element(in.texcoord, b.index));
+    case VertexAttrib::MatrixIndex:
+      return exec::DefinedReg(b.index == 0 ? in.matrix_index : Vec4{0.0f, 0.0f, 0.0f, 1.0f});
+    case VertexAttrib::Generic:
+      // "vertex.attrib[0]" and "vertex.position" are equivalent.
+      if (b.index == 0) return exec::DefinedReg(in.position);
+      if (b.index < 0 || b.index >= kMaxGenericAttribs) {
+        return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
+      }
+      return exec::DefinedReg(in.generic[static_cast<size_t>(b.index)]);
+  }
+  return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
+}
+
+// Table X.1 of ARBfp.
+Reg FragmentAttribValue(const Binding& b, const FragmentSource& f) {
+  switch (b.fragment_attrib) {
+    case FragmentAttrib::Color:
+      return f.color;
+    case FragmentAttrib::SecondaryColor:
+      return f.secondary;
+    case FragmentAttrib::TexCoord:
+      if (b.index < 0 || b.index >= kMaxTextureUnits) {
+        return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
+      }
+      return f.texcoord[static_cast<size_t>(b.index)];
+    case FragmentAttrib::FogCoord:
+      return {f.fogcoord, Val{0.0f}, Val{0.0f}, Val{1.0f}};
+    case FragmentAttrib::Position:
+      return f.position;
+  }
+  return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
+}
+
+Vec4 ParamValue(const std::map<int, Vec4>& params, int32_t index) {
+  auto it = params.find(index);
+  return it == params.end() ? Vec4{0.0f, 0.0f, 0.0f, 0.0f} : it->second;
+}
+
+// One execution of one program on one input.
+class Run {
+ public:
+  Run(const Program& program, const ExecInputs& inputs, const compiler::SourceFile* source,
+      Reasons* reasons)
+      : program_(program), inputs_(inputs), source_(source), reasons_(reasons) {}
+
+  // Executes with the attribute values `attrib` (one per variable; only Attrib ones used).
+  void Execute(const std::vector<Reg>& attrib) {
+    attrib_ = &attrib;
+    Setup();
+    const bool shadow = program_.HasOption(OptionId::FragmentProgramShadow);
+    for (const Instruction& inst : program_.instructions) {
+      exec::OpContext ctx;
+      ctx.inst = &inst;
+      ctx.reasons = reasons_;
+      ctx.where = Where(source_, inst.range);
+      ctx.textures = &inputs_.textures;
+      ctx.shadow_option = shadow;
+      ctx.killed = killed_;
+      ctx.killed_defined = killed_defined_;
+      ctx.kill_why = kill_why_;
+      for (size_t s = 0; s < inst.src_count; ++s) ctx.src[s] = Load(inst.src[s], ctx.where);
+      Reg result = exec::Execute(inst.op, ctx);
+      killed_ = ctx.killed;
+      killed_defined_ = ctx.killed_defined;
+      kill_why_ = ctx.kill_why;
+      Store(inst, result);
+    }
+  }
+
+  Outputs& outputs() { return outputs_; }
+  bool killed() const { return killed_; }
+  // The reason whether the fragment was killed is undefined, or kDefined.
+  int kill_why() const { return killed_defined_ ? kDefined : kill_why_; }
+
+ private:
+  const ProgramParameters& Params() const {
+    return program_.kind == ProgramKind::Vertex ? inputs_.vertex_params : inputs_.fragment_params;
+  }
+
+  void Setup() {
+    size_t n = program_.vars.size();
+    params_.assign(n, {});
+    temps_.assign(n, Reg{Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten},
+                         Val{0.0f, kUnwritten}});
+    address_.assign(n, Val{0.0f, kUnwritten});
+    for (size_t v = 0; v < n; ++v) {
+      const Variable& var = program_.vars[v];
+      if (var.kind == VarKind::Param) {
+        for (const Binding& b : var.bindings) params_[v].push_back(ParamReg(b));
+      } else if (var.kind == VarKind::Output && !var.bindings.empty()) {
+        OutKey key = KeyOf(var.bindings[0]);
+        if (!outputs_.count(key)) outputs_[key].binding = var.bindings[0];
+      }
+    }
+  }
+
+  Reg ParamReg(const Binding& b) {
+    switch (b.kind) {
+      case BindingKind::Constant:
+        return exec::DefinedReg(b.value);
+      case BindingKind::ProgramEnv:
+        return exec::DefinedReg(ParamValue(Params().env, b.index));
+      case BindingKind::ProgramLocal:
+        return exec::DefinedReg(ParamValue(Params().local, b.index));
+      case BindingKind::State: {
+        Vec4 v = ReadStateBinding(inputs_.state, b);
+        std::string why = StateBindingUndefined(inputs_.state, b);
+        if (why.empty()) return exec::DefinedReg(v);
+        return exec::UndefinedReg(
+            v, reasons_->Add(fmt::format("{}: {}", BindingName(b, program_.kind), why)));
+      }
+      case BindingKind::VertexAttrib:
+      case BindingKind::FragmentAttrib:
+      case BindingKind::Result:
+        break;
+    }
+    return exec::DefinedReg({0.0f, 0.0f, 0.0f, 0.0f});
+  }
+
+  std::string VarName(const Variable& var) const {
+    if (!var.name.empty()) return var.name;
+    if (!var.bindings.empty()) return BindingName(var.bindings[0], program_.kind);
+    return "?";
+  }
+
+  // The register an operand names, before swizzle and negation.
+  Reg Fetch(const SrcOperand& src, const std::string& where) {
+    const Variable& var = program_.vars[static_cast<size_t>(src.var)];
+    size_t v = static_cast<size_t>(src.var);
+    switch (var.kind) {
+      case VarKind::Attrib:
+        return (*attrib_)[v];
+      case VarKind::Temp:
+        return temps_[v];
+      case VarKind::Param:
+        return FetchParam(src, var, params_[v], where);
+      case VarKind::Address:
+      case VarKind::Output:
+        break;
+    }
+    return exec::DefinedReg({0.0f, 0.0f, 0.0f, 0.0f});
+  }
+
+  // ARBvp 2.14.4.2: index = addrReg + offset; outside the array the result is undefined and
+  // reads (0,0,0,0), as Mesa does.
+  Reg FetchParam(const SrcOperand& src, const Variable& var, const std::vector<Reg>& elements,
+                 const std::string& where) {
+    if (!src.relative) {
+      size_t index = src.indexed ? static_cast<size_t>(src.index) : 0;
+      return index < elements.size() ? elements[index] : exec::DefinedReg({0, 0, 0, 0});
+    }
+    const Variable& addr_var = program_.vars[static_cast<size_t>(src.address_var)];
+    Val addr = address_[static_cast<size_t>(src.address_var)];
+    if (addr.why == kUnwritten) {
+      addr.why = reasons_->Add(
+          fmt::format("address register '{}' read before ARL wrote it{}", addr_var.name, where));
+    }
+    std::string offset = src.index == 0 ? "" : fmt::format("{:+d}", src.index);
+    bool finite = std::isfinite(addr.v) && std::fabs(addr.v) < 1.0e9f;
+    int64_t index = finite ? static_cast<int64_t>(addr.v) + src.index : -1;
+    if (!finite || index < 0 || index >= static_cast<int64_t>(elements.size())) {
+      if (addr.why != kDefined) return exec::UndefinedReg({0, 0, 0, 0}, addr.why);
+      return exec::UndefinedReg(
+          {0.0f, 0.0f, 0.0f, 0.0f},
+          reasons_->Add(fmt::format("relative address {}.x{} = {} outside '{}[0..{}]'{}",
+                                    addr_var.name, offset, index, VarName(var), elements.size() - 1,
+                                    where)));
+    }
+    Reg r = elements[static_cast<size_t>(index)];
+    if (addr.why != kDefined) {
+      for (Val& c : r) c.why = addr.why;
+    }
+    return r;
+  }
+
+  // VectorLoad with swizzle (or extended swizzle) and negation.
+  Reg Load(const SrcOperand& src, const std::string& where) {
+    Reg base = Fetch(src, where);
+    const Variable& var = program_.vars[static_cast<size_t>(src.var)];
+    Reg r;
+    for (size_t i = 0; i < 4; ++i) {
+      Swz sel = src.swizzle[i];
+      Val v;
+      if (sel == Swz::Zero) {
+        v = Val{0.0f};
+      } else if (sel == Swz::One) {
+        v = Val{1.0f};
+      } else {
+        size_t c = static_cast<size_t>(sel);
+        v = base[c];
+        if (v.why == kUnwritten) {
+          v.why = reasons_->Add(fmt::format("temporary '{}.{}' read before it is written{}",
+                                            VarName(var), kComponents[c], where));
+        }
+      }
+      if (src.negate != src.component_negate[i]) v.v = -v.v;
+      r[i] = v;
+    }
+    return r;
+  }
+
+  void Store(const Instruction& inst, Reg result) {
+    if (inst.op == Opcode::KIL) return;
+    if (inst.op == Opcode::ARL) {
+      address_[static_cast<size_t>(inst.dst.var)] = result[0];
+      return;
+    }
+    if (inst.saturate) {
+      // 3.11.4.3: "if (result.x < 0) result.x = 0; else if (result.x > 1) result.x = 1;"
+      for (Val& v : result) {
+        if (v.v < 0.0f) {
+          v.v = 0.0f;
+        } else if (v.v > 1.0f) {
+          v.v = 1.0f;
+        }
+      }
+    }
+    const Variable& var = program_.vars[static_cast<size_t>(inst.dst.var)];
+    Reg* dest = nullptr;
+    uint8_t* written = nullptr;
+    if (var.kind == VarKind::Output) {
+      Output& out = outputs_[KeyOf(var.bindings[0])];
+      dest = &out.value;
+      written = &out.written;
+    } else {
+      dest = &temps_[static_cast<size_t>(inst.dst.var)];
+    }
+    for (size_t i = 0; i < 4; ++i) {
+      if (!(inst.dst.mask & (1u << i))) continue;
+      (*dest)[i] = result[i];
+      if (written) *written = static_cast<uint8_t>(*written | (1u << i));
+    }
+  }
+
+  const Program& program_;
+  const ExecInputs& inputs_;
+  const compiler::SourceFile* source_;
+  Reasons* reasons_;
+  const std::vector<Reg>* attrib_ = nullptr;
+  std::vector<std::vector<Reg>> params_;
+  std::vector<Reg> temps_;
+  std::vector<Val> address_;
+  Outputs outputs_;
+  bool killed_ = false;
+  bool killed_defined_ = false;
+  int kill_why_ = kDefined;
+};
+
+std::vector<Reg> VertexAttribs(const Program& program, const VertexInput& in) {
+  std::vector<Reg> attribs(program.vars.size());
+  for (size_t v = 0; v < program.vars.size(); ++v) {
+    const Variable& var = program.vars[v];
+    if (var.kind == VarKind::Attrib && !var.bindings.empty()) {
+      attribs[v] = VertexAttribValue(var.bindings[0], in);
+    }
+  }
+  return attribs;
+}
+
+std::vector<Reg> FragmentAttribs(const Program& program, const FragmentSource& source) {
+  std::vector<Reg> attribs(program.vars.size());
+  for (size_t v = 0; v < program.vars.size(); ++v) {
+    const Variable& var = program.vars[v];
+    if (var.kind == VarKind::Attrib && !var.bindings.empty()) {
+      attribs[v] = FragmentAttribValue(var.bindings[0], source);
+    }
+  }
+  return attribs;
+}
+
+// ARB_position_invariant: clip coordinates as GL 2.0 section 2.11 computes them, eye =
+// M * v then clip = P * eye, in float.
+void AddInvariantPosition(const ExecInputs& inputs, const VertexInput& in, Outputs* outputs) {
+  glm::vec4 object(in.position[0], in.position[1], in.position[2], in.position[3]);
+  glm::vec4 eye = inputs.state.modelview * object;
+  glm::vec4 clip = inputs.state.projection * eye;
+  Binding b;
+  b.kind = BindingKind::Result;
+  b.result = ResultReg::Position;
+  Output& out = (*outputs)[KeyOf(b)];
+  out.binding = b;
+  out.value = exec::DefinedReg({clip.x, clip.y, clip.z, clip.w});
+  out.written = 0xF;
+}
+
+// ARBfp 3.11.4.5.1: fog (GL 2.0 section 3.10) applied to the program's final clamped colour:
+// C = f * clamp(Cr) + (1 - f) * Cf for r, g, b with f clamped to [0, 1] and Cf the fog
+// colour (clamped when specified, so here); alpha is not changed (and, as every output,
+// not clamped: the engines read unclamped colour buffers).
+void ApplyFog(const Program& program, const GlState& state, Val c, Reasons* reasons,
+              Outputs* outputs) {
+  float f = 0.0f;
+  int why = c.why;
+  if (program.HasOption(OptionId::FogLinear)) {
+    f = (state.fog_end - c.v) / (state.fog_end - state.fog_start);
+    if (state.fog_end == state.fog_start && why == kDefined) {
+      why = reasons->Add("ARB_fog_linear with fog start == fog end");
+    }
+  } else if (program.HasOption(OptionId::FogExp)) {
+    f = std::exp(-(state.fog_density * c.v));
+  } else if (program.HasOption(OptionId::FogExp2)) {
+    float dc = state.fog_density * c.v;
+    f = std::exp(-(dc * dc));
+  } else {
+    return;
+  }
+  f = std::clamp(f, 0.0f, 1.0f);
+  for (auto& [key, out] : *outputs) {
+    if (out.binding.result != ResultReg::FragColor) continue;
+    for (size_t i = 0; i < 3; ++i) {
+      if (!(out.written & (1u << i))) continue;
+      float cr = std::clamp(out.value[i].v, 0.0f, 1.0f);
+      float cf = std::clamp(state.fog_color[i], 0.0f, 1.0f);
+      out.value[i] = From(f * cr + (1.0f - f) * cf, {out.value[i], Val{f, why}});
+    }
+  }
+}
+
+VectorResult Collect(const Program& program, const Outputs& outputs, const Reasons& reasons,
+                     bool killed, int kill_why) {
+  VectorResult result;
+  result.killed = killed;
+  if (kill_why != kDefined) {
+    result.kill_undefined = "whether KIL discards the fragment depends on " + reasons.Get(kill_why);
+  }
+  if (killed) return result;
+  for (const auto& [key, out] : outputs) {
+    if (out.written == 0) continue;
+    OutputRegister reg;
+    reg.binding = out.binding;
+    reg.name = BindingName(out.binding, program.kind);
+    reg.written = out.written;
+    for (size_t i = 0; i < 4; ++i) {
+      if (!(out.written & (1u << i))) continue;
+      reg.value[i] = out.value[i].v;
+      int why = out.value[i].why;
+      if (why == kDefined && kill_why != kDefined) why = kill_why;
+      if (why >= 0) reg.undefined[i] = reasons.Get(why);
+    }
+    result.outputs.push_back(std::move(reg));
+  }
+  std::stable_sort(result.outputs.begin(), result.outputs.end(),
+                   [](const OutputRegister& a, const OutputRegister& b) {
+                     return ResultRegOrder(a.binding, b.binding);
+                   });
+  return result;
+}
+
+// Runs one program on one vector; `fragment` supplies fragment attributes (unused by a
+// vertex program).
+VectorResult RunOne(const Program& program, const ExecInputs& inputs, const InputVector& in,
+                    const FragmentSource& fragment, const compiler::SourceFile* source,
+                    Reasons* reasons) {
+  Run run(program, inputs, source, reasons);
+  bool vp = program.kind == ProgramKind::Vertex;
+  run.Execute(vp ? VertexAttribs(program, in.vertex) : FragmentAttribs(program, fragment));
+  if (vp && program.HasOption(OptionId::PositionInvariant)) {
+    AddInvariantPosition(inputs, in.vertex, &run.outputs());
+  }
+  if (!vp) ApplyFog(program, inputs.state, fragment.fogcoord, reasons, &run.outputs());
+  return Collect(program, run.outputs(), *reasons, run.killed(), run.kill_why());
+}
+
+// A vertex output as a fragment input; components the vertex program did not write are
+// undefined (ARBvp 2.14.3.4).
+Reg Varying(const Outputs& outputs, ResultReg reg, int32_t index, bool secondary, const char* name,
+            Reasons* reasons) {
+  const Output* out = FindOutput(outputs, reg, index, secondary);
+  Reg r = exec::DefinedReg({0.0f, 0.0f, 0.0f, 0.0f});
+  for (size_t i = 0; i < 4; ++i) {
+    if (out && (out->written & (1u << i))) {
+      r[i] = out->value[i];
+    } else {
+      r[i].why = reasons->Add(fmt::format("{}.{} not written by the vertex program",
+                                          fmt::format(fmt::runtime(name), index), kComponents[i]));
+    }
+  }
+  return r;
+}
+
+// GL 2.0 section 2.14.6 (ARBvp 2.14.4.4 "color clamping"): vertex colours are clamped to
+// [0, 1] before rasterization.
+Reg ClampColor(Reg r) {
+  for (Val& v : r) v.v = std::clamp(v.v, 0.0f, 1.0f);
+  return r;
+}
+
+}  // namespace
+
+std::vector<VectorResult> Interpret(const Program& program, const ExecInputs& inputs,
+                                    const compiler::SourceFile* source) {
+  std::vector<VectorResult> results;
+  results.reserve(inputs.vectors.size());
+  for (size_t i = 0; i < inputs.vectors.size(); ++i) {
+    const InputVector& in = inputs.vectors[i];
+    Reasons reasons;
+    FragmentSource fragment = FromFragmentInput(in.fragment, i);
+    results.push_back(RunOne(program, inputs, in, fragment, source, &reasons));
+  }
+  return results;
+}
+
+std::vector<VectorResult> InterpretPair(const Program& vertex, const Program& fragment,
+                                        const ExecInputs& inputs,
+                                        const compiler::SourceFile* vertex_source,
+                                        const compiler::SourceFile* fragment_source) {
+  std::vector<VectorResult> results;
+  results.reserve(inputs.vectors.size());
+  for (size_t i = 0; i < inputs.vectors.size(); ++i) {
+    const InputVector& in = inputs.vectors[i];
+    Reasons reasons;
+    Run vrun(vertex, inputs, vertex_source, &reasons);
+    vrun.Execute(VertexAttribs(vertex, in.vertex));
+    const Outputs& vout = vrun.outputs();
+    FragmentSource f = FromFragmentInput(in.fragment, i);  // position: the vector's pixel
+    f.color = ClampColor(
+        Varying(vout, ResultReg::Color, 0, false, "result.color.front.primary", &reasons));
+    f.secondary = ClampColor(
+        Varying(vout, ResultReg::Color, 0, true, "result.color.front.secondary", &reasons));
+    for (size_t t = 0; t < f.texcoord.size(); ++t) {
+      f.texcoord[t] = Varying(vout, ResultReg::TexCoord, static_cast<int32_t>(t), false,
+                              "result.texcoord[{}]", &reasons);
+    }
+    f.fogcoord = Varying(vout, ResultReg::FogCoord, 0, false, "result.fogcoord", &reasons)[0];
+    results.push_back(RunOne(fragment, inputs, in, f, fragment_source, &reasons));
+  }
+  return results;
+}
+
+}  // namespace arbiter::arbvp

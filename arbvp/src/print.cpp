@@ -1,0 +1,195 @@
+// PrintProgram: the IR back as ARB assembly text (the runtime loads rewritten programs into
+// Mesa through it).
+#include "arbiter/arbvp/print.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+namespace arbiter::arbvp {
+namespace {
+
+// A float that parses back to the same value. inf has no spelling in ARB, but a literal
+// beyond the float range overflows to it when parsed (strtof, as Mesa's lexer does), so +-inf
+// prints as +-1e39. NaN has no spelling at all and prints as 0 (no parsed program holds one:
+// only IR built by hand can).
+std::string FloatText(float v) {
+  if (std::isnan(v)) return "0";
+  if (std::isinf(v)) return v > 0 ? "1e39" : "-1e39";
+  return fmt::format("{:.9g}", v);
+}
+
+std::string BindingText(const Binding& b, ProgramKind kind) {
+  if (b.kind == BindingKind::Constant) {
+    return fmt::format("{{{}, {}, {}, {}}}", FloatText(b.value[0]), FloatText(b.value[1]),
+                       FloatText(b.value[2]), FloatText(b.value[3]));
+  }
+  return BindingName(b, kind);
+}
+
+// Names every variable: declared names stay, implicit bindings (used directly in an
+// instruction) get a fresh name that no declared one takes.
+std::vector<std::string> VariableNames(const Program& program) {
+  std::set<std::string> taken;
+  for (const Variable& var : program.vars) {
+    if (!var.name.empty()) taken.insert(var.name);
+  }
+  std::vector<std::string> names;
+  names.reserve(program.vars.size());
+  for (size_t i = 0; i < program.vars.size(); ++i) {
+    const Variable& var = program.vars[i];
+    if (!var.name.empty()) {
+      names.push_back(var.name);
+      continue;
+    }
+    std::string name = fmt::format("arbiter_v{}", i);
+    while (taken.count(name) != 0) name += "_";
+    taken.insert(name);
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::string Declaration(const Variable& var, const std::string& name, ProgramKind kind) {
+  switch (var.kind) {
+    case VarKind::Temp:
+      return fmt::format("TEMP {};", name);
+    case VarKind::Address:
+      return fmt::format("ADDRESS {};", name);
+    case VarKind::Attrib:
+      return fmt::format("ATTRIB {} = {};", name, BindingText(var.bindings.at(0), kind));
+    case VarKind::Output:
+      return fmt::format("OUTPUT {} = {};", name, BindingText(var.bindings.at(0), kind));
+    case VarKind::Param:
+      if (!var.is_array) {
+        return fmt::format("PARAM {} = {};", name, BindingText(var.bindings.at(0), kind));
+      } else {
+        std::string text = fmt::format("PARAM {}[{}] = {{", name, var.bindings.size());
+        for (size_t i = 0; i < var.bindings.size(); ++i) {
+          text += fmt::format("{}\n  {}", i == 0 ? "" : ",", BindingText(var.bindings[i], kind));
+        }
+        return text + " };";
+      }
+  }
+  return "";
+}
+
+char ComponentChar(Swz s) {
+  switch (s) {
+    case Swz::X:
+      return 'x';
+    case Swz::Y:
+      return 'y';
+    case Swz::Z:
+      return 'z';
+    case Swz::W:
+      return 'w';
+    case Swz::Zero:
+      return '0';
+    case Swz::One:
+      return '1';
+  }
+  return 'x';
+}
+
+std::string MaskText(uint8_t mask) {
+  std::string text = ".";
+  for (int i = 0; i < 4; ++i) {
+    if ((mask >> i) & 1) text += "xyzw"[i];
+  }
+  return text;
+}
+
+class Printer {
+ public:
+  explicit Printer(const Program& program) : program_(program), names_(VariableNames(program)) {}
+
+  std::string Print() {
+    std::string out = program_.kind == ProgramKind::Vertex ? "!!ARBvp1.0\n" : "!!ARBfp1.0\n";
+    for (const Option& option : program_.options) {
+      out += fmt::format("OPTION {};\n", GetOptionInfo(option.id).spelling);
+    }
+    // Every variable in IR order, so that parsing the text again numbers them the same way.
+    for (size_t i = 0; i < program_.vars.size(); ++i) {
+      out += Declaration(program_.vars[i], names_[i], program_.kind) + "\n";
+    }
+    for (const Instruction& inst : program_.instructions) out += PrintInstruction(inst) + "\n";
+    return out + "END\n";
+  }
+
+ private:
+  std::string PrintInstruction(const Instruction& inst) {
+    const OpcodeInfo& info = GetOpcodeInfo(inst.op);
+    std::string text(info.name);
+    if (inst.saturate) text += "_SAT";
+    std::vector<std::string> operands;
+    if (info.signature != OpSignature::Kil) operands.push_back(Dst(inst.dst));
+    if (info.signature == OpSignature::Swz) {
+      operands.push_back(ExtendedSwizzle(inst.src[0]));
+    } else {
+      for (int i = 0; i < inst.src_count; ++i) operands.push_back(Src(inst.src[i]));
+    }
+    if (info.signature == OpSignature::Sample) {
+      operands.push_back(fmt::format("texture[{}]", inst.tex_unit));
+      operands.emplace_back(TexTargetName(inst.target));
+    }
+    for (size_t i = 0; i < operands.size(); ++i) text += (i == 0 ? " " : ", ") + operands[i];
+    return text + ";";
+  }
+
+  std::string Dst(const DstOperand& dst) {
+    std::string text = names_.at(static_cast<size_t>(dst.var));
+    // An address register always spells its only component (<addrWriteMask> is required).
+    bool address = program_.vars.at(static_cast<size_t>(dst.var)).kind == VarKind::Address;
+    if (dst.mask != 0xF || address) text += MaskText(dst.mask);
+    return text;
+  }
+
+  std::string Register(const SrcOperand& src) {
+    std::string text = names_.at(static_cast<size_t>(src.var));
+    if (src.relative) {
+      std::string address = names_.at(static_cast<size_t>(src.address_var));
+      if (src.index > 0) return fmt::format("{}[{}.x + {}]", text, address, src.index);
+      if (src.index < 0) return fmt::format("{}[{}.x - {}]", text, address, -src.index);
+      return fmt::format("{}[{}.x]", text, address);
+    }
+    if (src.indexed) text += fmt::format("[{}]", src.index);
+    return text;
+  }
+
+  std::string Src(const SrcOperand& src) {
+    std::string text = (src.negate ? "-" : "") + Register(src);
+    const auto& s = src.swizzle;
+    if (s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) {
+      // A replicated component: the scalar form, which scalar instructions require.
+      text += ".";
+      text += ComponentChar(s[0]);
+    } else if (!(s[0] == Swz::X && s[1] == Swz::Y && s[2] == Swz::Z && s[3] == Swz::W)) {
+      text += ".";
+      for (Swz c : s) text += ComponentChar(c);
+    }
+    return text;
+  }
+
+  // <extendedSwizzle>: the register (SWZ allows no sign there, so a negated source flips
+  // every component's sign), then four comma-separated components with signs.
+  std::string ExtendedSwizzle(const SrcOperand& src) {
+    std::string text = Register(src);
+    for (size_t i = 0; i < 4; ++i) {
+      text += ", ";
+      if (src.component_negate[i] != src.negate) text += "-";
+      text += ComponentChar(src.swizzle[i]);
+    }
+    return text;
+  }
+
+  const Program& program_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace
+
+std::string PrintProgram(const Program& program) { return Printer(program).Print(); }
+
+}  // namespace arbiter::arbvp

@@ -1,0 +1,338 @@
+// arbiter exec: run ARB programs on the reference interpreter and/or Mesa and print every
+// output register per input vector.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "arbiter/arbvp/check.h"
+#include "arbiter/arbvp/exec_io.h"
+#include "arbiter/arbvp/interpret.h"
+#include "arbiter/runtime/mesa.h"
+#include "arbiter/runtime/worker.h"
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+struct ExecCommandOptions {
+  CommonOptions common;  // --format --color --error-limit --stage, the files
+  std::string engine = "ref";
+  std::string backend = "osmesa";
+  std::string driver = "softpipe";
+  std::vector<std::string> set;
+  std::vector<std::string> state;
+  std::vector<std::string> textures;
+  std::string vectors;
+  int timeout_ms = 60000;
+  int memory_mib = 8192;
+};
+
+struct LoadedProgram {
+  std::unique_ptr<compiler::SourceFile> source;
+  arbvp::CheckResult checked;
+};
+
+struct EngineRun {
+  std::string name;  // "ref", "mesa"
+  std::vector<arbvp::VectorResult> results;
+};
+
+// Reads and checks every file; prints diagnostics. Returns the worst outcome.
+Exit LoadPrograms(const ExecCommandOptions& options, std::vector<LoadedProgram>* programs) {
+  std::optional<arbvp::ProgramKind> stage;
+  if (!ResolveStage(options.common, &stage)) return Exit::Usage;
+  std::vector<compiler::FileReport> reports;
+  Exit exit = Exit::Ok;
+  for (const Input& input : ExpandInputs(options.common.files)) {
+    compiler::FileReport report;
+    report.path = input.display_path;
+    LoadedProgram p;
+    p.source = ReadInput(input, &report);
+    if (!p.source) {
+      exit = Worse(exit, Exit::Environment);
+    } else {
+      compiler::DiagnosticSink sink(options.common.error_limit);
+      arbvp::CheckOptions check;
+      check.expected_kind = stage;
+      p.checked = arbvp::CheckProgram(*p.source, check, &sink);
+      if (!p.checked.ok || !p.checked.program) exit = Worse(exit, Exit::Rejected);
+      report.diagnostics = std::move(sink.diagnostics());
+      report.dropped_errors = sink.dropped();
+      programs->push_back(std::move(p));
+    }
+    if (!report.diagnostics.empty()) reports.push_back(std::move(report));
+  }
+  // Diagnostics go to stderr as text in every format: stdout holds the results alone.
+  CommonOptions text = options.common;
+  text.format = "text";
+  if (!reports.empty()) PrintReports(reports, text);
+  return exit;
+}
+
+// The programs to run: one alone, or a vertex program and a fragment program as a pair.
+bool PickPrograms(const std::vector<LoadedProgram>& loaded, const LoadedProgram** vertex,
+                  const LoadedProgram** fragment) {
+  *vertex = nullptr;
+  *fragment = nullptr;
+  for (const LoadedProgram& p : loaded) {
+    const LoadedProgram** slot =
+        p.checked.program->kind == arbvp::ProgramKind::Vertex ? vertex : fragment;
+    if (*slot) return false;
+    *slot = &p;
+  }
+  return *vertex || *fragment;
+}
+
+bool BuildInputs(const ExecCommandOptions& options, arbvp::ExecInputs* inputs) {
+  std::string error;
+  if (!options.vectors.empty()) {
+    std::string text;
+    if (!compiler::ReadFileBytes(options.vectors, &text, &error) ||
+        !arbvp::ParseVectorsJson(text, inputs, &error)) {
+      fmt::print(stderr, "arbiter: error: {}: {}\n", options.vectors, error);
+      return false;
+    }
+  }
+  if (inputs->vectors.empty()) inputs->vectors.emplace_back();
+  // Flags apply on top of the file, to every vector.
+  for (const std::string& state : options.state) {
+    if (!state.starts_with("state.")) {
+      fmt::print(stderr, "arbiter: error: --state '{}': names start with 'state.'\n", state);
+      return false;
+    }
+  }
+  for (const auto* list : {&options.state, &options.set}) {
+    for (const std::string& assignment : *list) {
+      for (arbvp::InputVector& v : inputs->vectors) {
+        if (!arbvp::ApplyAssignment(assignment, inputs, &v, &error)) {
+          fmt::print(stderr, "arbiter: error: {}\n", error);
+          return false;
+        }
+      }
+    }
+  }
+  for (const std::string& flag : options.textures) {
+    if (!arbvp::ApplyTextureFlag(flag, inputs, &error)) {
+      fmt::print(stderr, "arbiter: error: --texture {}\n", error);
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string ComponentCell(const arbvp::OutputRegister& o, size_t c) {
+  if (!(o.written & (1u << c))) return "-";
+  std::string text = arbvp::FormatFloat(o.value[c]);
+  if (!o.undefined[c].empty()) text += "?";
+  return text;
+}
+
+const arbvp::OutputRegister* FindOutput(const arbvp::VectorResult& r, const std::string& name) {
+  for (const arbvp::OutputRegister& o : r.outputs) {
+    if (o.name == name) return &o;
+  }
+  return nullptr;
+}
+
+// Text: one block per vector, one line per register and engine; '*' marks a component
+// that differs from the first engine's, '?' one the specs leave undefined.
+void PrintText(const std::vector<EngineRun>& runs, const std::vector<arbvp::Difference>& diffs) {
+  std::string out;
+  std::vector<std::string> notes;
+  const size_t vectors = runs.front().results.size();
+  const bool several = runs.size() > 1;
+  for (size_t v = 0; v < vectors; ++v) {
+    out += fmt::format("vector {}\n", v);
+    std::vector<std::string> names;
+    for (const EngineRun& run : runs) {
+      const arbvp::VectorResult& r = run.results[v];
+      if (r.killed) {
+        out += fmt::format("  {:<28}{}killed\n", "(fragment)", several ? run.name + "  " : "");
+      }
+      for (const arbvp::OutputRegister& o : r.outputs) {
+        if (std::find(names.begin(), names.end(), o.name) == names.end()) names.push_back(o.name);
+      }
+    }
+    for (const std::string& name : names) {
+      for (size_t e = 0; e < runs.size(); ++e) {
+        const arbvp::OutputRegister* o = FindOutput(runs[e].results[v], name);
+        std::string line = fmt::format("  {:<28}", e == 0 || !several ? name : "");
+        if (several) line += fmt::format("{:<6}", runs[e].name);
+        for (size_t c = 0; c < 4; ++c) {
+          std::string cell = o ? ComponentCell(*o, c) : "-";
+          bool differs = false;
+          for (const arbvp::Difference& d : diffs) {
+            differs |= e > 0 && d.vector == v && d.reg == name &&
+                       (d.component == static_cast<int>(c) || d.component < 0);
+          }
+          line += fmt::format(" {:>14}", cell + (differs ? "*" : ""));
+          if (o && !o->undefined[c].empty() && e == 0) {
+            notes.push_back(
+                fmt::format("vector {} {}.{}: {}", v, name, "xyzw"[c], o -> undefined[c]));
+          }
+        }
+        out += line + "\n";
+      }
+    }
+  }
+  if (!notes.empty()) {
+    out += "undefined (not compared):\n";
+    for (const std::string& n : notes) out += "  " + n + "\n";
+  }
+  if (several) {
+    out += diffs.empty() ? "the engines agree on every defined component\n"
+                         : fmt::format("{} difference(s) between {} and {}\n", diffs.size(),
+                                       runs[0].name, runs[1].name);
+  }
+  fmt::print("{}", out);
+}
+
+void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Difference>& diffs,
+               const std::vector<std::string>& files) {
+  nlohmann::ordered_json j;
+  j["files"] = files;
+  nlohmann::ordered_json engines = nlohmann::ordered_json::object();
+  for (const EngineRun& run : runs) engines[run.name] = arbvp::ResultsToJson(run.results);
+  j["results"] = engines;
+  if (runs.size() > 1) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const arbvp::Difference& d : diffs) {
+      nlohmann::ordered_json jd = {{"vector", d.vector}, {"register", d.reg}};
+      if (d.component >= 0) {
+        jd["component"] = std::string(1, "xyzw"[d.component]);
+        jd[runs[0].name] = arbvp::FloatToJson(d.a);
+        jd[runs[1].name] = arbvp::FloatToJson(d.b);
+      } else {
+        jd["what"] = d.what;
+      }
+      list.push_back(std::move(jd));
+    }
+    j["differences"] = list;
+  }
+  fmt::print("{}\n", j.dump(2));
+}
+
+int RunExec(const ExecCommandOptions& options) {
+  runtime::Backend backend = runtime::Backend::OSMesa;
+  if (!runtime::ParseBackend(options.backend, &backend) ||
+      !runtime::IsSupportedMesaDriver(options.driver)) {
+    fmt::print(stderr, "arbiter: error: unknown backend '{}' or driver '{}'\n", options.backend,
+               options.driver);
+    return static_cast<int>(Exit::Usage);
+  }
+  std::vector<LoadedProgram> loaded;
+  Exit exit = LoadPrograms(options, &loaded);
+  if (exit != Exit::Ok) return static_cast<int>(exit);
+  const LoadedProgram* vertex = nullptr;
+  const LoadedProgram* fragment = nullptr;
+  if (!PickPrograms(loaded, &vertex, &fragment)) {
+    fmt::print(stderr,
+               "arbiter: error: exec runs one program, or one vertex program and one fragment "
+               "program as a pair\n");
+    return static_cast<int>(Exit::Usage);
+  }
+  arbvp::ExecInputs inputs;
+  if (!BuildInputs(options, &inputs)) return static_cast<int>(Exit::Usage);
+
+  std::vector<EngineRun> runs;
+  if (options.engine == "ref" || options.engine == "all") {
+    EngineRun run{"ref", {}};
+    if (vertex && fragment) {
+      run.results = arbvp::InterpretPair(*vertex->checked.program, *fragment->checked.program,
+                                         inputs, vertex->source.get(), fragment->source.get());
+    } else {
+      const LoadedProgram* p = vertex ? vertex : fragment;
+      run.results = arbvp::Interpret(*p->checked.program, inputs, p->source.get());
+    }
+    runs.push_back(std::move(run));
+  }
+  if (options.engine == "mesa" || options.engine == "all") {
+    runtime::ExecOptions exec;
+    exec.backend = backend;
+    exec.driver = options.driver;
+    runtime::WorkerLimits limits;
+    limits.timeout_ms = options.timeout_ms;
+    limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+    runtime::ArbPrograms programs;
+    programs.vertex = vertex ? vertex->checked.program.get() : nullptr;
+    programs.fragment = fragment ? fragment->checked.program.get() : nullptr;
+    EngineRun run{"mesa", {}};
+    std::string error;
+    if (runtime::RunArbInWorker(exec, limits, programs, inputs, &run.results, &error) !=
+        runtime::WorkerStatus::Ok) {
+      fmt::print(stderr, "arbiter: error: mesa ({}, {}): {}\n", options.backend, options.driver,
+                 error);
+      return static_cast<int>(Exit::Environment);
+    }
+    runs.push_back(std::move(run));
+  }
+
+  std::vector<arbvp::Difference> diffs;
+  if (runs.size() > 1) diffs = arbvp::CompareResults(runs[0].results, runs[1].results);
+  std::vector<std::string> files;
+  for (const LoadedProgram& p : loaded) files.push_back(p.source->path());
+  if (options.common.format == "json") {
+    PrintJson(runs, diffs, files);
+  } else {
+    PrintText(runs, diffs);
+  }
+  return static_cast<int>(diffs.empty() ? Exit::Ok : Exit::Rejected);
+}
+
+}  // namespace
+
+// Adds the `exec` subcommand to `app`; the returned function runs it once it is parsed.
+std::function<int()> AddExecCommand(CLI::App* app) {
+  auto options = std::make_shared<ExecCommandOptions>();
+  CLI::App* exec = app->add_subcommand(
+      "exec",
+      "run ARB programs on the reference interpreter or Mesa and print every output register");
+  exec->footer(
+      "A vertex program and a fragment program given together run as a pair. With --engine all, "
+      "the exit code is 1 when the engines differ on a component the specs define. Inputs: "
+      "docs/exec.md.");
+  CommonOptions& common = options->common;
+  exec->add_option("files", common.files, "one program, or a vertex and a fragment program")
+      ->required();
+  exec->add_option("--engine", options->engine,
+                   "ref (the reference interpreter), mesa, or all (both, differences marked)")
+      ->check(CLI::IsMember({"ref", "mesa", "all"}));
+  exec->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  exec->add_option("--driver", options->driver, "Mesa's driver")
+      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
+  exec->add_option("--set", options->set,
+                   "NAME=V1,V2,..: an input for every vector (vertex.attrib[1]=1,2,3,4, "
+                   "fragment.texcoord[0]=.5,.5, program.local[0]=..., vertex.program.env[2]=...)")
+      ->allow_extra_args(false);
+  exec->add_option("--state", options->state,
+                   "NAME=V1,..: GL state (state.light[0].diffuse=1,0,0,1, "
+                   "state.matrix.modelview=<16 numbers, row-major>, state.fog.density=2, ...)")
+      ->allow_extra_args(false);
+  exec->add_option("--texture", options->textures,
+                   "UNIT=TARGET:PATTERN[:WxH[xD]][:nearest|linear][:repeat|clamp|mirror], e.g. "
+                   "0=2d:checker:4x4:linear (patterns: checker, gradient, depth-gradient, "
+                   "depth-gradient-compare)")
+      ->allow_extra_args(false);
+  exec->add_option("--vectors", options->vectors,
+                   "a JSON file of inputs: {\"set\": {...}, \"textures\": {...}, \"vectors\": "
+                   "[{...}, ...]} (docs/exec.md)");
+  exec->add_option("--format", common.format, "output format")
+      ->check(CLI::IsMember({"text", "json"}));
+  exec->add_option("--color", common.color, "colour diagnostics")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  exec->add_option("--stage", common.stage, "the kind of a program read from stdin")
+      ->check(CLI::IsMember({"arbvp", "arbfp"}));
+  exec->add_option("--error-limit", common.error_limit, "stop reporting errors after N")
+      ->check(CLI::NonNegativeNumber);
+  exec->add_option("--timeout", options->timeout_ms, "time limit of the Mesa worker, ms")
+      ->check(CLI::Range(100, 3600000));
+  exec->add_option("--memory-limit", options->memory_mib, "memory limit of the Mesa worker, MiB")
+      ->check(CLI::Range(256, 1 << 20));
+  return [options] { return RunExec(*options); };
+}
+
+}  // namespace arbiter::cli

@@ -1,0 +1,31 @@
+// The GL context the executor draws with: OSMesa (context_osmesa.cpp) or EGL surfaceless
+// (context_egl.cpp). Both draw into the executor's own framebuffer object.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "exec/exec_gl.h"
+
+namespace arbiter::runtime::exec {
+
+class GlContext {
+ public:
+  virtual ~GlContext() = default;
+  // Binds the context to the calling thread; false when the platform refuses.
+  [[nodiscard]] virtual bool MakeCurrent() = 0;
+  // Unbinds it again.
+  virtual void Release() = 0;
+  // The context's entry point lookup.
+  virtual GetProcFn get_proc() const = 0;
+};
+
+// Sets Mesa's environment (GALLIUM_DRIVER = `driver`, which the caller has validated; no
+// shader cache) before any context exists.
+void SetMesaEnvironment(const std::string& driver);
+
+// A compatibility-profile context; null (with `error` set) on failure.
+std::unique_ptr<GlContext> CreateOsMesaContext(std::string* error);
+std::unique_ptr<GlContext> CreateEglContext(std::string* error);
+
+}  // namespace arbiter::runtime::exec

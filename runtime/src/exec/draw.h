@@ -1,0 +1,21 @@
+// Drawing one GL_POINTS point per input vector at its pixel, with its attributes.
+#pragma once
+
+#include "arbiter/arbvp/exec.h"
+#include "exec/exec_gl.h"
+#include "exec/program_rewrite.h"
+
+namespace arbiter::runtime::exec {
+
+// The clip coordinates that put a point at the centre of FragmentPixel(index) with window
+// depth `depth` (under the state's depth range), w = 1.
+arbvp::Vec4 PixelClipPosition(size_t index, int width, int height, float depth,
+                              const arbvp::GlState& state);
+
+// Sends every vector of `inputs` as one point: the fragment inputs in the generic attributes
+// the pass-through vertex program reads (fragment programs alone), or the vertex inputs plus
+// the pixel position in plan.position_attrib or plan.position_env (vertex programs).
+void DrawPoints(const ExecGl& gl, const RunPlan& plan, const arbvp::ExecInputs& inputs, int width,
+                int height);
+
+}  // namespace arbiter::runtime::exec
