@@ -14,6 +14,8 @@ namespace arbiter::cli {
 std::function<int()> AddLinkCommand(CLI::App* app);
 // cmd_exec.cpp: adds the `exec` subcommand.
 std::function<int()> AddExecCommand(CLI::App* app);
+// cmd_translate.cpp: adds the `translate` subcommand.
+std::function<int()> AddTranslateCommand(CLI::App* app);
 }  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
   arbiter::cli::AddCommonOptions(info, &info_options, /*diagnostics=*/false);
 
   std::function<int()> run_link = arbiter::cli::AddLinkCommand(&app);
+  std::function<int()> run_translate = arbiter::cli::AddTranslateCommand(&app);
   std::function<int()> run_exec = arbiter::cli::AddExecCommand(&app);
 
   try {
@@ -51,6 +54,7 @@ int main(int argc, char** argv) {
   if (check->parsed()) return arbiter::cli::RunCheck(check_options);
   if (info->parsed()) return arbiter::cli::RunInfo(info_options);
   if (app.get_subcommand("link")->parsed()) return run_link();
+  if (app.get_subcommand("translate")->parsed()) return run_translate();
   if (app.get_subcommand("exec")->parsed()) return run_exec();
   return static_cast<int>(Exit::Usage);
 }

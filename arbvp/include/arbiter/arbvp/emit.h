@@ -1,0 +1,153 @@
+// The GLSL 1.10 emitter: translates a checked ARB vertex or fragment program into a GLSL 1.10
+// shader with the exact ARB semantics, and describes in a BindingMap every uniform, attribute
+// and sampler the host must feed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "arbiter/arbvp/ir.h"
+#include "arbiter/compiler/source.h"
+
+namespace arbiter::arbvp {
+
+// Test-only: injects ONE plausible translator bug into the emitted GLSL, so that a
+// differential verifier can prove it catches it. Never set outside tests.
+enum class Mutation : uint8_t {
+  None,
+  RsqNoAbs,               // RSQ = inversesqrt(x) instead of inversesqrt(abs(x))
+  LrpOperandOrder,        // LRP = mix(b, c, a) instead of mix(c, b, a)
+  MatrixRowsColumns,      // state.matrix rows read as columns
+  LitNoZeroPowZero,       // LIT.z = pow(y, w) without the 0^0 = 1 rule
+  LitExponentClamp180,    // LIT clamps w to +-180 instead of +-(128 - eps)
+  LitNoYClamp,            // LIT does not clamp y at 0
+  SwzSignLost,            // SWZ drops the per-component signs
+  SwzZeroOneSwapped,      // SWZ 0 and 1 selectors exchanged
+  ArlTruncate,            // ARL truncates towards zero instead of flooring
+  SaturateDropped,        // _SAT ignored
+  KilOnNaN,               // KIL kills when !(v >= 0), so NaN kills
+  KilOnlyX,               // KIL tests only the x component
+  FogExpAsExp2,           // ARB_fog_exp uses the exp2 formula
+  FogLinearStartEnd,      // ARB_fog_linear with start and end exchanged
+  CmpLessEqual,           // CMP selects b when a <= 0 instead of a < 0
+  DphNoW,                 // DPH ignores b.w
+  DstComponents,          // DST y and z exchanged
+  XpdOperandOrder,        // XPD = cross(b, a)
+  LogNoAbs,               // LOG of x instead of |x|
+  ExpFraction,            // EXP.y = t - trunc(t) instead of t - floor(t)
+  TxpNoDivide,            // TXP samples like TEX (no divide by q)
+  TxbNoBias,              // TXB samples like TEX (bias dropped)
+  NegationDropped,        // a negated source operand read without its sign
+  WriteMaskIgnored,       // every destination written in full
+  RelativeNoBoundsCheck,  // out-of-range relative reads clamp the index instead of giving 0
+  ScsSinCosSwapped,       // SCS = (sin, cos) instead of (cos, sin)
+  PowOperandsSwapped,     // POW = pow(b, a)
+  FrcTruncate,            // FRC = x - trunc(x) instead of x - floor(x)
+  SgeStrict,              // SGE compares with > instead of >=
+  FogColorUnclamped,      // fog options blend the unclamped colour
+  kCount,                 // not a mutation: the number of enumerators
+};
+
+// The stable name of a mutation ("rsq-no-abs"); "none" for Mutation::None.
+std::string_view MutationName(Mutation mutation);
+// Every mutation except None, in enum order.
+std::vector<Mutation> AllMutations();
+// Looks a mutation up by name; returns false if unknown.
+bool LookupMutation(std::string_view name, Mutation* mutation);
+
+struct EmitOptions {
+  // Precede each statement with the ARB instruction it translates, as a `//` comment (the
+  // instruction's source text when a SourceFile is given).
+  bool comments = true;
+  Mutation mutation = Mutation::None;  // test-only
+};
+
+// ---------------------------------------------------------------------------------------
+// The binding map: what the host must feed to the translated shader(s).
+
+// A user `attribute vec4` standing for a vertex attribute without a GLSL 1.10 built-in.
+struct AttributeBinding {
+  std::string name;     // GLSL name ("arb_attrib3")
+  int location = -1;    // glBindAttribLocation index; -1: any (no ARB alias)
+  std::string binding;  // ARB spelling ("vertex.attrib[3]")
+};
+
+// A `uniform vec4 NAME[size]` array holding program.env or program.local of one target.
+struct ParameterArray {
+  std::string name;  // "arb_vp_env"
+  ProgramKind target = ProgramKind::Vertex;
+  bool local = false;  // program.local (else program.env)
+  int size = 0;        // element i = program.{env,local}[i]
+};
+
+// A sampler uniform for one texture unit.
+struct SamplerBinding {
+  std::string name;  // "arb_texture0"
+  int unit = 0;
+  TexTarget target = TexTarget::Tex2D;
+  std::string type;  // GLSL sampler type ("sampler2D")
+};
+
+// A uniform standing for GL state that GLSL 1.10 has no built-in for (program matrices,
+// modelview[n>0], palette matrices, clip planes beyond gl_MaxClipPlanes' minimum...).
+struct StateUniform {
+  std::string name;     // "arb_matrix_program0"
+  std::string type;     // "mat4" (column-major, as glUniformMatrix4fv without transpose) or "vec4"
+  std::string binding;  // ARB spelling of the state ("state.matrix.program[0].inverse")
+};
+
+// How an ARB register maps onto GLSL (read registers and written results).
+struct RegisterMapping {
+  std::string binding;  // ARB spelling ("result.fogcoord", "fragment.texcoord[1]")
+  std::string glsl;     // GLSL expression ("gl_FogFragCoord", "gl_TexCoord[1]")
+  ProgramKind stage = ProgramKind::Vertex;
+};
+
+struct BindingMap {
+  std::vector<AttributeBinding> attributes;
+  std::vector<ParameterArray> parameters;
+  std::vector<SamplerBinding> samplers;
+  std::vector<StateUniform> state;
+  std::vector<RegisterMapping> inputs;   // attributes the program reads
+  std::vector<RegisterMapping> outputs;  // results the program writes
+  // Choices for cases the specs leave undefined, so that a verifier knows what to expect.
+  bool relative_out_of_range_reads_zero = true;  // a[A0.x + k] outside the array: vec4(0.0)
+  float xpd_w = 1.0f;                            // XPD writes w = 1.0 when w is in the mask
+  float scs_z = 0.0f;                            // SCS writes (cos, sin, 0.0, 1.0)
+  float scs_w = 1.0f;
+  bool temporaries_start_zero = true;  // TEMPs are vec4(0.0) before their first write
+  std::string mutation = "none";       // the injected test mutation, if any
+};
+
+// The binding map as JSON text (stable key order, 2-space indent, final newline).
+std::string BindingMapToJson(const BindingMap& map);
+
+// ---------------------------------------------------------------------------------------
+// Translation.
+
+struct Translation {
+  std::string glsl;  // a vertex shader for a vertex program, a fragment shader otherwise
+  BindingMap bindings;
+};
+
+struct PairTranslation {
+  std::string vertex;    // GLSL vertex shader
+  std::string fragment;  // GLSL fragment shader
+  BindingMap bindings;   // merged: both stages' uniforms, attributes and samplers
+};
+
+// Translates one checked program (CheckResult::ok). `source` (optional) is the program's
+// text, quoted in the comments; the output is byte-identical for identical input.
+Translation EmitGlsl(const Program& program, const EmitOptions& options,
+                     const compiler::SourceFile* source);
+
+// Translates a vertex and a fragment program for one GLSL program object: the varyings
+// match (gl_TexCoord is declared with the same size in both shaders) and the binding map is
+// merged (program.env/local keep one array per target).
+PairTranslation EmitGlslPair(const Program& vertex, const Program& fragment,
+                             const EmitOptions& options, const compiler::SourceFile* vertex_source,
+                             const compiler::SourceFile* fragment_source);
+
+}  // namespace arbiter::arbvp

@@ -1,0 +1,360 @@
+// ARB bindings as GLSL 1.10: attributes, state (built-ins, rebuilt where ARB packs state
+// differently), program parameters, and the results a program writes.
+#include <fmt/format.h>
+
+#include "emit/emit_context.h"
+
+namespace arbiter::arbvp::emit {
+namespace {
+
+// GLSL 1.10 guarantees gl_MaxClipPlanes >= 6 only; planes past that become uniforms.
+constexpr int kGlslClipPlanes = 6;
+// gl_MultiTexCoord0..7 are the only texture-coordinate attributes GLSL 1.10 names.
+constexpr int kGlslMultiTexCoords = 8;
+
+// vec4(xyz, w) with its parts known.
+Expr Vec3W(const std::string& xyz, const std::string& w) {
+  Expr e{fmt::format("vec4({}, {})", xyz, w), 4, true};
+  e.parts = {xyz + ".x", xyz + ".y", xyz + ".z", w};
+  e.xyz = xyz;
+  return e;
+}
+
+// vec4(a, b, c, d) of four float fields.
+Expr Fields(const std::string& a, const std::string& b, const std::string& c,
+            const std::string& d) {
+  Expr e{fmt::format("vec4({}, {}, {}, {})", a, b, c, d), 4, true};
+  e.parts = {a, b, c, d};
+  return e;
+}
+
+Expr UserAttribute(Context& ctx, const Binding& b, const std::string& name, int location) {
+  ctx.attribs[name] = AttributeBinding{name, location, BindingName(b, ctx.program.kind)};
+  return {name, 4, true};
+}
+
+Expr StateUniformVec4(Context& ctx, const Binding& b, const std::string& name) {
+  ctx.state[name] = StateUniform{name, "vec4", BindingName(b, ctx.program.kind)};
+  return {name, 4, true};
+}
+
+std::string Face(const Binding& b, const char* front, const char* back) {
+  return b.face == Face::Back ? back : front;
+}
+
+// The built-in matrix for a matrix binding, or "" when GLSL 1.10 has none.
+std::string BuiltinMatrix(const Binding& b) {
+  switch (b.matrix) {
+    case MatrixName::Modelview:
+      return b.index == 0 ? "gl_ModelViewMatrix" : "";
+    case MatrixName::Projection:
+      return "gl_ProjectionMatrix";
+    case MatrixName::Mvp:
+      return "gl_ModelViewProjectionMatrix";
+    case MatrixName::Texture:
+      return "gl_TextureMatrix";
+    case MatrixName::Palette:
+    case MatrixName::Program:
+      return "";
+  }
+  return "";
+}
+
+std::string_view ModifierSuffix(MatrixModifier m) {
+  switch (m) {
+    case MatrixModifier::None:
+      return "";
+    case MatrixModifier::Inverse:
+      return "Inverse";
+    case MatrixModifier::Transpose:
+      return "Transpose";
+    case MatrixModifier::InvTrans:
+      return "InverseTranspose";
+  }
+  return "";
+}
+
+// Row r of an ARB matrix binding. ARB reads ROWS, GLSL indexes COLUMNS: row r of M is
+// column r of transpose(M), so for built-ins we index the transposed built-in
+// (gl_ModelViewMatrixTranspose[r] is row r of the modelview matrix); for a matrix held in a
+// uniform, row r is vec4(M[0][r], M[1][r], M[2][r], M[3][r]).
+Expr MatrixRow(Context& ctx, const Binding& b) {
+  bool swap = ctx.Mutated(Mutation::MatrixRowsColumns);
+  int r = b.row;
+  std::string builtin = BuiltinMatrix(b);
+  if (!builtin.empty()) {
+    // The built-in whose column r is the wanted row: transpose of (M with modifier).
+    MatrixModifier column_of = MatrixModifier::None;
+    switch (b.modifier) {
+      case MatrixModifier::None:
+        column_of = MatrixModifier::Transpose;
+        break;
+      case MatrixModifier::Inverse:
+        column_of = MatrixModifier::InvTrans;
+        break;
+      case MatrixModifier::Transpose:
+        column_of = MatrixModifier::None;
+        break;
+      case MatrixModifier::InvTrans:
+        column_of = MatrixModifier::Inverse;
+        break;
+    }
+    if (swap) column_of = b.modifier;
+    std::string m = builtin + std::string(ModifierSuffix(column_of));
+    if (b.matrix == MatrixName::Texture) m += fmt::format("[{}]", b.index);
+    return {fmt::format("{}[{}]", m, r), 4, true};
+  }
+  // A uniform holding M (for no modifier and .transpose) or inverse(M) (.inverse and
+  // .invtrans), as GL stores matrices (column-major).
+  bool inverse = b.modifier == MatrixModifier::Inverse || b.modifier == MatrixModifier::InvTrans;
+  bool transposed =
+      b.modifier == MatrixModifier::Transpose || b.modifier == MatrixModifier::InvTrans;
+  std::string_view kind = b.matrix == MatrixName::Modelview ? "modelview"
+                          : b.matrix == MatrixName::Palette ? "palette"
+                                                            : "program";
+  std::string name = fmt::format("arb_matrix_{}{}{}", kind, b.index, inverse ? "_inverse" : "");
+  Binding whole = b;
+  whole.modifier = inverse ? MatrixModifier::Inverse : MatrixModifier::None;
+  std::string spelled = BindingName(whole, ctx.program.kind);
+  spelled = spelled.substr(0, spelled.rfind(".row["));
+  ctx.state[name] = StateUniform{name, "mat4", spelled};
+  if (transposed != swap) return {fmt::format("{}[{}]", name, r), 4, true};
+  return {fmt::format("vec4({0}[0][{1}], {0}[1][{1}], {0}[2][{1}], {0}[3][{1}])", name, r), 4,
+          true};
+}
+
+Expr ReadState(Context& ctx, const Binding& b) {
+  const int n = b.index;
+  auto light = [&](const char* field) { return fmt::format("gl_LightSource[{}].{}", n, field); };
+  auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
+  std::string material = Face(b, "gl_FrontMaterial", "gl_BackMaterial");
+  switch (b.state) {
+    case StateItem::MaterialAmbient:
+      return e(material + ".ambient");
+    case StateItem::MaterialDiffuse:
+      return e(material + ".diffuse");
+    case StateItem::MaterialSpecular:
+      return e(material + ".specular");
+    case StateItem::MaterialEmission:
+      return e(material + ".emission");
+    case StateItem::MaterialShininess:  // (s, 0, 0, 1)
+      return Fields(material + ".shininess", "0.0", "0.0", "1.0");
+    case StateItem::LightAmbient:
+      return e(light("ambient"));
+    case StateItem::LightDiffuse:
+      return e(light("diffuse"));
+    case StateItem::LightSpecular:
+      return e(light("specular"));
+    case StateItem::LightPosition:
+      return e(light("position"));
+    case StateItem::LightAttenuation:  // (constant, linear, quadratic, spot exponent)
+      return Fields(light("constantAttenuation"), light("linearAttenuation"),
+                    light("quadraticAttenuation"), light("spotExponent"));
+    case StateItem::LightSpotDirection:  // (direction, cos(cutoff))
+      return Vec3W(light("spotDirection"), light("spotCosCutoff"));
+    case StateItem::LightHalf:  // (|| normalize(P) + (0, 0, 1) ||, 1): see arb_half
+      ctx.helpers.insert(Helper::Half);
+      return e(fmt::format("arb_half({})", light("position")));
+    case StateItem::LightModelAmbient:
+      return e("gl_LightModel.ambient");
+    case StateItem::LightModelSceneColor:  // (a_cs * a_cm + e_cm, diffuse alpha)
+      return Vec3W(
+          Face(b, "gl_FrontLightModelProduct", "gl_BackLightModelProduct") + ".sceneColor.rgb",
+          material + ".diffuse.a");
+    case StateItem::LightProdAmbient:
+    case StateItem::LightProdDiffuse:
+    case StateItem::LightProdSpecular: {  // (light colour * material colour, material alpha)
+      const char* field = b.state == StateItem::LightProdAmbient   ? "ambient"
+                          : b.state == StateItem::LightProdDiffuse ? "diffuse"
+                                                                   : "specular";
+      return Vec3W(fmt::format("{}[{}].{}.rgb",
+                               Face(b, "gl_FrontLightProduct", "gl_BackLightProduct"), n, field),
+                   fmt::format("{}.{}.a", material, field));
+    }
+    case StateItem::TexGenEye:
+    case StateItem::TexGenObject:
+      return e(fmt::format("gl_{}Plane{}[{}]", b.state == StateItem::TexGenEye ? "Eye" : "Object",
+                           "STRQ"[b.coord & 3], n));
+    case StateItem::FogColor:
+      return e("gl_Fog.color");
+    case StateItem::FogParams:  // (density, start, end, 1 / (end - start))
+      return Fields("gl_Fog.density", "gl_Fog.start", "gl_Fog.end", "gl_Fog.scale");
+    case StateItem::ClipPlane:
+      if (n >= kGlslClipPlanes) return StateUniformVec4(ctx, b, fmt::format("arb_clip_plane{}", n));
+      return e(fmt::format("gl_ClipPlane[{}]", n));
+    case StateItem::PointSize:  // (size, min, max, fade threshold)
+      return Fields("gl_Point.size", "gl_Point.sizeMin", "gl_Point.sizeMax",
+                    "gl_Point.fadeThresholdSize");
+    case StateItem::PointAttenuation:  // (constant, linear, quadratic, 1)
+      return Fields("gl_Point.distanceConstantAttenuation", "gl_Point.distanceLinearAttenuation",
+                    "gl_Point.distanceQuadraticAttenuation", "1.0");
+    case StateItem::TexEnvColor:
+      return e(fmt::format("gl_TextureEnvColor[{}]", n));
+    case StateItem::DepthRange:  // (near, far, far - near, 1)
+      return Fields("gl_DepthRange.near", "gl_DepthRange.far", "gl_DepthRange.diff", "1.0");
+    case StateItem::MatrixRow:
+      return MatrixRow(ctx, b);
+  }
+  return e("vec4(0.0)");
+}
+
+Expr ReadVertexAttrib(Context& ctx, const Binding& b) {
+  const int n = b.index;
+  auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
+  switch (b.vertex_attrib) {
+    case VertexAttrib::Position:
+      return e("gl_Vertex");
+    case VertexAttrib::Weight:  // ARB_vertex_blend: weight[0] aliases generic attribute 1
+      return UserAttribute(ctx, b, fmt::format("arb_weight{}", n), n == 0 ? 1 : -1);
+    case VertexAttrib::Normal:  // (x, y, z, 1)
+      return Vec3W("gl_Normal", "1.0");
+    case VertexAttrib::Color:
+      return e("gl_Color");
+    case VertexAttrib::SecondaryColor:
+      return e("gl_SecondaryColor");
+    case VertexAttrib::FogCoord:  // (f, 0, 0, 1)
+      return Fields("gl_FogCoord", "0.0", "0.0", "1.0");
+    case VertexAttrib::TexCoord:
+      if (n >= kGlslMultiTexCoords)
+        return UserAttribute(ctx, b, fmt::format("arb_texcoord{}", n), -1);
+      return e(fmt::format("gl_MultiTexCoord{}", n));
+    case VertexAttrib::MatrixIndex:
+      return UserAttribute(ctx, b, fmt::format("arb_matrixindex{}", n), -1);
+    case VertexAttrib::Generic:  // attribute 0 is the vertex position (GL 2.0 2.7)
+      if (n == 0) return e("gl_Vertex");
+      return UserAttribute(ctx, b, fmt::format("arb_attrib{}", n), n);
+  }
+  return e("vec4(0.0)");
+}
+
+Expr ReadFragmentAttrib(Context& ctx, const Binding& b) {
+  auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
+  switch (b.fragment_attrib) {
+    case FragmentAttrib::Color:
+      return e("gl_Color");
+    case FragmentAttrib::SecondaryColor:
+      return e("gl_SecondaryColor");
+    case FragmentAttrib::TexCoord:
+      ctx.texcoord_size = std::max(ctx.texcoord_size, b.index + 1);
+      return e(fmt::format("gl_TexCoord[{}]", b.index));
+    case FragmentAttrib::FogCoord:  // (f, 0, 0, 1)
+      return Fields("gl_FogFragCoord", "0.0", "0.0", "1.0");
+    case FragmentAttrib::Position:  // (x, y, z, 1/w) in both
+      return e("gl_FragCoord");
+  }
+  return e("vec4(0.0)");
+}
+
+}  // namespace
+
+std::string EnvName(const Context& ctx, bool local) {
+  return fmt::format("arb_{}_{}", ctx.IsVertex() ? "vp" : "fp", local ? "local" : "env");
+}
+
+std::string FogColorName(const Context& ctx, int index) {
+  if (!ctx.program.HasOption(OptionId::DrawBuffers)) return "arb_color";
+  return fmt::format("arb_color{}", index);
+}
+
+// Without ARB_draw_buffers result.color is gl_FragColor (broadcast to every draw buffer);
+// with it, result.color[n] is gl_FragData[n] (result.color is result.color[0]).
+std::string FragColorName(const Context& ctx, int index) {
+  if (!ctx.program.HasOption(OptionId::DrawBuffers)) return "gl_FragColor";
+  return fmt::format("gl_FragData[{}]", index);
+}
+
+std::string SamplerName(int unit) { return fmt::format("arb_texture{}", unit); }
+
+std::string SamplerType(TexTarget target) {
+  switch (target) {
+    case TexTarget::Tex1D:
+      return "sampler1D";
+    case TexTarget::Tex2D:
+      return "sampler2D";
+    case TexTarget::Tex3D:
+      return "sampler3D";
+    case TexTarget::Cube:
+      return "samplerCube";
+    case TexTarget::Rect:
+      return "sampler2DRect";
+    case TexTarget::Shadow1D:
+      return "sampler1DShadow";
+    case TexTarget::Shadow2D:
+      return "sampler2DShadow";
+    case TexTarget::ShadowRect:
+      return "sampler2DRectShadow";
+  }
+  return "sampler2D";
+}
+
+Expr ReadBinding(Context& ctx, const Binding& b) {
+  Expr out;
+  switch (b.kind) {
+    case BindingKind::VertexAttrib:
+      out = ReadVertexAttrib(ctx, b);
+      break;
+    case BindingKind::FragmentAttrib:
+      out = ReadFragmentAttrib(ctx, b);
+      break;
+    case BindingKind::State:
+      return ReadState(ctx, b);
+    case BindingKind::ProgramEnv:
+    case BindingKind::ProgramLocal: {
+      bool local = b.kind == BindingKind::ProgramLocal;
+      int& size = local ? ctx.local_size : ctx.env_size;
+      size = std::max(size, b.index + 1);
+      return {fmt::format("{}[{}]", EnvName(ctx, local), b.index), 4, true};
+    }
+    case BindingKind::Constant: {
+      std::vector<std::string> parts;
+      for (float v : b.value) parts.push_back(FormatFloat(v));
+      return Construct(parts);
+    }
+    case BindingKind::Result:
+      return {"vec4(0.0)", 4, true};  // write-only: the checker rejects reads
+  }
+  std::string name = BindingName(b, ctx.program.kind);
+  ctx.inputs[name] = RegisterMapping{name, out.text, ctx.program.kind};
+  return out;
+}
+
+DestTarget ResultTarget(Context& ctx, const Binding& b) {
+  DestTarget t;
+  switch (b.result) {
+    case ResultReg::Position:
+      t.lvalue = "gl_Position";
+      break;
+    case ResultReg::Color:
+      t.lvalue = b.face == Face::Back ? (b.secondary ? "gl_BackSecondaryColor" : "gl_BackColor")
+                                      : (b.secondary ? "gl_FrontSecondaryColor" : "gl_FrontColor");
+      break;
+    case ResultReg::FogCoord:
+      t = {"gl_FogFragCoord", 0};
+      break;
+    case ResultReg::PointSize:
+      t = {"gl_PointSize", 0};
+      break;
+    case ResultReg::TexCoord:
+      ctx.texcoord_size = std::max(ctx.texcoord_size, b.index + 1);
+      t.lvalue = fmt::format("gl_TexCoord[{}]", b.index);
+      break;
+    case ResultReg::FragColor:
+      if (ctx.fog_redirect) {
+        ctx.fog_colors.insert(b.index);
+        t.lvalue = FogColorName(ctx, b.index);
+      } else {
+        t.lvalue = FragColorName(ctx, b.index);
+      }
+      break;
+    case ResultReg::FragDepth:  // the depth is result.depth.z
+      t = {"gl_FragDepth", 2};
+      break;
+  }
+  std::string name = BindingName(b, ctx.program.kind);
+  std::string glsl = t.lvalue;
+  if (b.result == ResultReg::FragColor) glsl = FragColorName(ctx, b.index);
+  ctx.outputs[name] = RegisterMapping{name, glsl, ctx.program.kind};
+  return t;
+}
+
+}  // namespace arbiter::arbvp::emit

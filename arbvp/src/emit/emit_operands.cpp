@@ -1,0 +1,134 @@
+// Source operands (swizzle, negation, relative addressing, folded constants) and
+// destination writes (write mask, _SAT).
+#include <fmt/format.h>
+
+#include "emit/emit_context.h"
+
+namespace arbiter::arbvp::emit {
+namespace {
+
+bool Negated(const Context& ctx, const SrcOperand& src) {
+  return src.negate && !ctx.Mutated(Mutation::NegationDropped);
+}
+
+// A constant operand is folded: its swizzled, negated components as a literal.
+Expr FoldConstant(const Context& ctx, const Binding& b, const SrcOperand& src, const Comps& comps) {
+  std::vector<float> values;
+  for (int c : comps) {
+    Swz s = src.swizzle[static_cast<size_t>(c)];
+    float v = s == Swz::Zero ? 0.0f : s == Swz::One ? 1.0f : b.value[static_cast<size_t>(s)];
+    values.push_back(Negated(ctx, src) ? -v : v);
+  }
+  bool same = true;
+  for (float v : values) same = same && FormatFloat(v) == FormatFloat(values[0]);
+  if (values.size() == 1) return {FormatFloat(values[0]), 1, values[0] >= 0.0f};
+  if (same) return Replicate({FormatFloat(values[0]), 1, true}, static_cast<int>(values.size()));
+  std::vector<std::string> parts;
+  for (float v : values) parts.push_back(FormatFloat(v));
+  return Construct(parts);
+}
+
+// A relative offset A0.x + k as GLSL int arithmetic.
+std::string RelativeIndex(const Context& ctx, const SrcOperand& src) {
+  std::string a = ctx.var_names[static_cast<size_t>(src.address_var)];
+  if (src.index > 0) return fmt::format("{} + {}", a, src.index);
+  if (src.index < 0) return fmt::format("{} - {}", a, -src.index);
+  return a;
+}
+
+}  // namespace
+
+Expr Source(Context& ctx, const SrcOperand& src, const Comps& comps) {
+  const Variable& var = ctx.program.vars[static_cast<size_t>(src.var)];
+  Expr base;
+  switch (var.kind) {
+    case VarKind::Temp:
+    case VarKind::Address:
+      base = {ctx.var_names[static_cast<size_t>(src.var)], 4, true};
+      break;
+    case VarKind::Attrib:
+    case VarKind::Output:
+      base = ReadBinding(ctx, var.bindings.at(0));
+      break;
+    case VarKind::Param: {
+      if (src.relative) {
+        base = {fmt::format("{}({})", RelativeReaderName(ctx, src.var), RelativeIndex(ctx, src)), 4,
+                true};
+        break;
+      }
+      const Binding& b = var.bindings.at(src.indexed ? static_cast<size_t>(src.index) : 0);
+      if (b.kind == BindingKind::Constant) return FoldConstant(ctx, b, src, comps);
+      base = ReadBinding(ctx, b);
+      break;
+    }
+  }
+  std::string letters;
+  for (int c : comps) {
+    Swz s = src.swizzle[static_cast<size_t>(c)];
+    letters += s <= Swz::W ? "xyzw"[static_cast<int>(s)] : 'x';
+  }
+  Expr out = base;
+  bool in_xyz = letters.find('w') == std::string::npos;
+  if (letters != "xyzw" && !base.parts.empty() && comps.size() == 1) {
+    out = {base.parts[static_cast<size_t>(std::string("xyzw").find(letters[0]))], 1, true};
+  } else if (letters != "xyzw" && in_xyz && !base.xyz.empty()) {
+    out = {letters == "xyz" ? base.xyz : base.xyz + "." + letters, static_cast<int>(comps.size()),
+           true};
+  } else if (letters != "xyzw") {
+    out = {(base.atomic ? base.text : "(" + base.text + ")") + "." + letters,
+           static_cast<int>(comps.size()), true};
+  }
+  if (Negated(ctx, src)) out = {"-" + out.text, out.width, false};
+  return out;
+}
+
+// SWZ: each component is 0, 1 or a source component, with its own sign (ARBvp 2.14.5.26).
+std::string SwizzleComponent(Context& ctx, const SrcOperand& src, int comp) {
+  Swz s = src.swizzle[static_cast<size_t>(comp)];
+  bool negate = src.negate != (src.component_negate[static_cast<size_t>(comp)] &&
+                               !ctx.Mutated(Mutation::SwzSignLost));
+  if (ctx.Mutated(Mutation::NegationDropped)) negate = false;
+  if (s == Swz::Zero || s == Swz::One) {
+    bool one = (s == Swz::One) != ctx.Mutated(Mutation::SwzZeroOneSwapped);
+    return std::string(negate ? "-" : "") + (one ? "1.0" : "0.0");
+  }
+  SrcOperand plain = src;
+  plain.negate = negate;
+  plain.component_negate = {false, false, false, false};
+  std::swap(plain.swizzle[0], plain.swizzle[static_cast<size_t>(comp)]);
+  return Source(ctx, plain, {0}).text;
+}
+
+std::string AssignImpl(Context& ctx, const Instruction& inst,
+                       const std::function<Expr(const Comps&)>& value) {
+  const Variable& var = ctx.program.vars[static_cast<size_t>(inst.dst.var)];
+  DestTarget target;
+  if (var.kind == VarKind::Temp) {
+    target.lvalue = ctx.var_names[static_cast<size_t>(inst.dst.var)];
+  } else {
+    target = ResultTarget(ctx, var.bindings.at(0));
+  }
+  uint8_t mask = ctx.Mutated(Mutation::WriteMaskIgnored) ? 0xF : inst.dst.mask;
+  auto saturate = [&](Expr e) {
+    if (!inst.saturate || ctx.Mutated(Mutation::SaturateDropped)) return e;
+    return Expr{fmt::format("clamp({}, 0.0, 1.0)", e.text), e.width, true};
+  };
+  if (target.scalar_component >= 0) {
+    // A float result register takes one component of the ARB result, if written.
+    if (!(mask & (1u << target.scalar_component))) {
+      return fmt::format("// (component {} of {} is not written)\n",
+                         "xyzw"[target.scalar_component], target.lvalue);
+    }
+    Expr e = saturate(value({target.scalar_component}));
+    return fmt::format("{} = {};\n", target.lvalue, e.text);
+  }
+  Comps comps;
+  for (int c = 0; c < 4; ++c) {
+    if (mask & (1u << c)) comps.push_back(c);
+  }
+  Expr e = saturate(value(comps));
+  if (comps.size() == 4) return fmt::format("{} = {};\n", target.lvalue, e.text);
+  return fmt::format("{}.{} = {};\n", target.lvalue, Letters(comps), e.text);
+}
+
+}  // namespace arbiter::arbvp::emit

@@ -1,0 +1,238 @@
+// Whole translations: the shader text (header, declarations, helpers, main) and the binding
+// map, for one program or for a vertex + fragment pair.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "arbiter/arbvp/emit.h"
+#include "emit/emit_context.h"
+
+namespace arbiter::arbvp {
+namespace emit {
+namespace {
+
+std::string Indent(const std::string& lines) {
+  std::string out;
+  size_t start = 0;
+  while (start < lines.size()) {
+    size_t end = lines.find('\n', start);
+    if (end == std::string::npos) end = lines.size();
+    std::string line = lines.substr(start, end - start);
+    out += (line.empty() ? "" : "  ") + line + "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
+// The fog blend of OPTION ARB_fog_*: ARBfp 3.11.4.5.1 applies GL fog (GL 2.0 section 3.10)
+// to the program's final colour clamped to [0, 1]: C = mix(Cf, clamp(Cr), f) for r, g, b,
+// alpha unchanged, f clamped to [0, 1], c = fragment.fogcoord.x and Cf the fog colour
+// (clamped, as GL clamps it when it is specified). With ARB_draw_buffers every
+// result.color[n] is fogged, as the reference interpreter does.
+std::string FogEpilogue(const Context& ctx) {
+  std::string c = "gl_FogFragCoord";
+  std::string out;
+  if (ctx.program.HasOption(OptionId::FogLinear)) {
+    out += "// OPTION ARB_fog_linear: f = (end - c) / (end - start), c = gl_FogFragCoord\n";
+    out += ctx.Mutated(Mutation::FogLinearStartEnd)
+               ? fmt::format(
+                     "float arb_fog = clamp((gl_Fog.start - {}) / (gl_Fog.start - gl_Fog.end), "
+                     "0.0, 1.0);\n",
+                     c)
+               : fmt::format(
+                     "float arb_fog = clamp((gl_Fog.end - {}) / (gl_Fog.end - gl_Fog.start), "
+                     "0.0, 1.0);\n",
+                     c);
+  } else if (ctx.program.HasOption(OptionId::FogExp) && !ctx.Mutated(Mutation::FogExpAsExp2)) {
+    out += "// OPTION ARB_fog_exp: f = exp(-density * c), c = gl_FogFragCoord\n";
+    out += fmt::format("float arb_fog = clamp(exp(-(gl_Fog.density * {})), 0.0, 1.0);\n", c);
+  } else {
+    out += fmt::format("// OPTION {}: f = exp(-(density * c)^2), c = gl_FogFragCoord\n",
+                       ctx.program.HasOption(OptionId::FogExp) ? "ARB_fog_exp" : "ARB_fog_exp2");
+    out += fmt::format("float arb_fog_dc = gl_Fog.density * {};\n", c);
+    out += "float arb_fog = clamp(exp(-(arb_fog_dc * arb_fog_dc)), 0.0, 1.0);\n";
+  }
+  for (int n : ctx.fog_colors) {
+    std::string color = FogColorName(ctx, n);
+    std::string rgb = ctx.Mutated(Mutation::FogColorUnclamped)
+                          ? color + ".rgb"
+                          : fmt::format("clamp({}.rgb, 0.0, 1.0)", color);
+    out += fmt::format("{} = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), {}, arb_fog), {}.a);\n",
+                       FragColorName(ctx, n), rgb, color);
+  }
+  return out;
+}
+
+std::string_view PrecisionNote(const Program& p) {
+  if (p.HasOption(OptionId::PrecisionFastest)) return "ARB_precision_hint_fastest";
+  if (p.HasOption(OptionId::PrecisionNicest)) return "ARB_precision_hint_nicest";
+  return "";
+}
+
+std::string EmitShader(Context& ctx) {
+  const Program& p = ctx.program;
+  AssignNames(ctx);
+  ctx.fog_redirect = p.kind == ProgramKind::Fragment &&
+                     (p.HasOption(OptionId::FogLinear) || p.HasOption(OptionId::FogExp) ||
+                      p.HasOption(OptionId::FogExp2));
+
+  // The body first: it records what the declarations must provide.
+  std::string body;
+  for (const Instruction& inst : p.instructions) {
+    if (ctx.options.comments) body += "// " + InstructionComment(ctx, inst) + "\n";
+    body += EmitInstruction(ctx, inst);
+  }
+  if (ctx.fog_redirect) body += (body.empty() ? "" : "\n") + FogEpilogue(ctx);
+
+  std::string locals;
+  std::string globals;
+  std::string readers;
+  for (size_t i = 0; i < p.vars.size(); ++i) {
+    const Variable& v = p.vars[i];
+    const std::string& name = ctx.var_names[i];
+    if (v.kind == VarKind::Temp) locals += fmt::format("vec4 {} = vec4(0.0);\n", name);
+    if (v.kind == VarKind::Address) locals += fmt::format("int {} = 0;\n", name);
+  }
+  for (int n : ctx.fog_colors) {
+    locals +=
+        fmt::format("vec4 {} = vec4(0.0);  // result.color{}, before fog\n", FogColorName(ctx, n),
+                    p.HasOption(OptionId::DrawBuffers) ? fmt::format("[{}]", n) : "");
+  }
+  for (size_t i = 0; i < p.vars.size(); ++i) {
+    if (!ctx.relative[i] || p.vars[i].kind != VarKind::Param) continue;
+    const Variable& v = p.vars[i];
+    const std::string& name = ctx.var_names[i];
+    globals += fmt::format("vec4 {}[{}];  // PARAM {}, read with relative addressing\n", name,
+                           v.bindings.size(), v.name);
+    for (size_t e = 0; e < v.bindings.size(); ++e) {
+      locals += fmt::format("{}[{}] = {};\n", name, e, ReadBinding(ctx, v.bindings[e]).text);
+    }
+    readers += "\n" + RelativeReaderText(ctx, static_cast<int>(i));
+  }
+  if (p.HasOption(OptionId::PositionInvariant)) {
+    locals += "gl_Position = ftransform();  // OPTION ARB_position_invariant\n";
+    ctx.outputs["result.position"] =
+        RegisterMapping{"result.position", "gl_Position", ProgramKind::Vertex};
+  }
+
+  std::string out = "#version 110\n";
+  if (ctx.needs_rect) out += "#extension GL_ARB_texture_rectangle : require\n";
+  out += fmt::format("// ARB {} program translated to GLSL 1.10 by arbiter.\n",
+                     ctx.IsVertex() ? "vertex" : "fragment");
+  if (std::string_view hint = PrecisionNote(p); !hint.empty()) {
+    out += fmt::format("// OPTION {}: a hint, nothing to translate.\n", hint);
+  }
+  if (p.HasOption(OptionId::FragmentProgramShadow)) {
+    out += "// OPTION ARB_fragment_program_shadow: shadow samplers.\n";
+  }
+
+  std::string decls;
+  if (ctx.texcoord_declared > 0) {
+    decls += fmt::format("varying vec4 gl_TexCoord[{}];\n", ctx.texcoord_declared);
+  }
+  std::vector<AttributeBinding> attribs;
+  for (const auto& [name, a] : ctx.attribs) attribs.push_back(a);
+  std::stable_sort(attribs.begin(), attribs.end(), [](const auto& a, const auto& b) {
+    return (a.location < 0 ? 99 : a.location) < (b.location < 0 ? 99 : b.location);
+  });
+  for (const AttributeBinding& a : attribs) {
+    decls += fmt::format("attribute vec4 {};  // {}{}\n", a.name, a.binding,
+                         a.location >= 0 ? fmt::format(", location {}", a.location) : "");
+  }
+  for (bool local : {false, true}) {
+    int size = local ? ctx.local_size : ctx.env_size;
+    if (size == 0) continue;
+    decls += fmt::format("uniform vec4 {}[{}];  // program.{}[{}]\n", EnvName(ctx, local), size,
+                         local ? "local" : "env", size == 1 ? "0" : fmt::format("0..{}", size - 1));
+  }
+  for (const auto& [name, s] : ctx.state) {
+    decls += fmt::format("uniform {} {};  // {}\n", s.type, name, s.binding);
+  }
+  for (const auto& [unit, target] : ctx.samplers) {
+    decls += fmt::format("uniform {} {};  // texture[{}], {}\n", SamplerType(target),
+                         SamplerName(unit), unit, TexTargetName(target));
+  }
+  decls += globals;
+  if (!decls.empty()) out += "\n" + decls;
+  for (Helper h : ctx.helpers) out += "\n" + HelperText(ctx, h);
+  out += readers;
+  out += "\nvoid main() {\n";
+  out += Indent(locals);
+  if (!locals.empty() && !body.empty()) out += "\n";
+  out += Indent(body);
+  out += "}\n";
+  return out;
+}
+
+BindingMap MakeBindingMap(const Context& ctx) {
+  BindingMap map;
+  for (const auto& [name, a] : ctx.attribs) map.attributes.push_back(a);
+  std::stable_sort(map.attributes.begin(), map.attributes.end(), [](const auto& a, const auto& b) {
+    return (a.location < 0 ? 99 : a.location) < (b.location < 0 ? 99 : b.location);
+  });
+  if (ctx.env_size > 0) {
+    map.parameters.push_back({EnvName(ctx, false), ctx.program.kind, false, ctx.env_size});
+  }
+  if (ctx.local_size > 0) {
+    map.parameters.push_back({EnvName(ctx, true), ctx.program.kind, true, ctx.local_size});
+  }
+  for (const auto& [unit, target] : ctx.samplers) {
+    map.samplers.push_back({SamplerName(unit), unit, target, SamplerType(target)});
+  }
+  for (const auto& [name, s] : ctx.state) map.state.push_back(s);
+  for (const auto& [name, r] : ctx.inputs) map.inputs.push_back(r);
+  for (const auto& [name, r] : ctx.outputs) map.outputs.push_back(r);
+  map.mutation = std::string(MutationName(ctx.mutation));
+  return map;
+}
+
+}  // namespace
+}  // namespace emit
+
+Translation EmitGlsl(const Program& program, const EmitOptions& options,
+                     const compiler::SourceFile* source) {
+  emit::Context ctx(program, options, source);
+  Translation t;
+  t.glsl = emit::EmitShader(ctx);
+  t.bindings = emit::MakeBindingMap(ctx);
+  return t;
+}
+
+PairTranslation EmitGlslPair(const Program& vertex, const Program& fragment,
+                             const EmitOptions& options, const compiler::SourceFile* vertex_source,
+                             const compiler::SourceFile* fragment_source) {
+  // A first pass finds how many gl_TexCoord elements each side uses; both shaders then
+  // declare the array with the same size, so the linked varyings match.
+  int texcoords = 0;
+  {
+    emit::Context v(vertex, options, vertex_source);
+    emit::Context f(fragment, options, fragment_source);
+    (void)emit::EmitShader(v);
+    (void)emit::EmitShader(f);
+    texcoords = std::max(v.texcoord_size, f.texcoord_size);
+  }
+  emit::Context v(vertex, options, vertex_source);
+  emit::Context f(fragment, options, fragment_source);
+  v.texcoord_declared = texcoords;
+  f.texcoord_declared = texcoords;
+  PairTranslation pair;
+  pair.vertex = emit::EmitShader(v);
+  pair.fragment = emit::EmitShader(f);
+  BindingMap vm = emit::MakeBindingMap(v);
+  BindingMap fm = emit::MakeBindingMap(f);
+  pair.bindings = vm;
+  BindingMap& m = pair.bindings;
+  m.attributes.insert(m.attributes.end(), fm.attributes.begin(), fm.attributes.end());
+  m.parameters.insert(m.parameters.end(), fm.parameters.begin(), fm.parameters.end());
+  m.samplers.insert(m.samplers.end(), fm.samplers.begin(), fm.samplers.end());
+  for (const StateUniform& s : fm.state) {
+    bool seen = std::any_of(m.state.begin(), m.state.end(),
+                            [&](const StateUniform& x) { return x.name == s.name; });
+    if (!seen) m.state.push_back(s);
+  }
+  m.inputs.insert(m.inputs.end(), fm.inputs.begin(), fm.inputs.end());
+  m.outputs.insert(m.outputs.end(), fm.outputs.begin(), fm.outputs.end());
+  return pair;
+}
+
+}  // namespace arbiter::arbvp

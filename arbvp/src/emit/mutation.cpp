@@ -1,0 +1,66 @@
+// The names of the test-only translator mutations (emit.h).
+#include <array>
+
+#include "arbiter/arbvp/emit.h"
+
+namespace arbiter::arbvp {
+namespace {
+
+constexpr std::array<std::string_view, static_cast<size_t>(Mutation::kCount)> kNames = {
+    "none",
+    "rsq-no-abs",
+    "lrp-operand-order",
+    "matrix-rows-columns",
+    "lit-no-zero-pow-zero",
+    "lit-exponent-clamp-180",
+    "lit-no-y-clamp",
+    "swz-sign-lost",
+    "swz-zero-one-swapped",
+    "arl-truncate",
+    "saturate-dropped",
+    "kil-on-nan",
+    "kil-only-x",
+    "fog-exp-as-exp2",
+    "fog-linear-start-end",
+    "cmp-less-equal",
+    "dph-no-w",
+    "dst-components",
+    "xpd-operand-order",
+    "log-no-abs",
+    "exp-fraction",
+    "txp-no-divide",
+    "txb-no-bias",
+    "negation-dropped",
+    "write-mask-ignored",
+    "relative-no-bounds-check",
+    "scs-sin-cos-swapped",
+    "pow-operands-swapped",
+    "frc-truncate",
+    "sge-strict",
+    "fog-color-unclamped",
+};
+
+}  // namespace
+
+std::string_view MutationName(Mutation mutation) {
+  size_t i = static_cast<size_t>(mutation);
+  return i < kNames.size() ? kNames[i] : "none";
+}
+
+std::vector<Mutation> AllMutations() {
+  std::vector<Mutation> out;
+  for (size_t i = 1; i < kNames.size(); ++i) out.push_back(static_cast<Mutation>(i));
+  return out;
+}
+
+bool LookupMutation(std::string_view name, Mutation* mutation) {
+  for (size_t i = 0; i < kNames.size(); ++i) {
+    if (kNames[i] == name) {
+      *mutation = static_cast<Mutation>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace arbiter::arbvp

@@ -1,0 +1,266 @@
+// arbiter translate: ARB programs to GLSL 1.10, each translation checked by glslang before
+// it is written (a failure is a translator bug: exit 3, nothing written).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <set>
+
+#include "arbiter/arbvp/check.h"
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/runtime/translate.h"
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TranslateCommandOptions {
+  CommonOptions common;  // the files, --stage, --color, --error-limit, --limits
+  std::string output;    // -o
+  std::string bindings;  // --bindings
+  bool pair = false;
+  bool no_comments = false;
+  std::string mutation = "none";  // test-only: --mutation (hidden)
+};
+
+struct Loaded {
+  Input input;
+  std::unique_ptr<compiler::SourceFile> source;
+  arbvp::CheckResult checked;
+};
+
+// One unit of output: a program alone, or a pair.
+struct Job {
+  const Loaded* vertex = nullptr;
+  const Loaded* fragment = nullptr;
+  std::string stem;  // output name without extension, for directory outputs
+};
+
+Exit Load(const TranslateCommandOptions& options, std::vector<Loaded>* loaded) {
+  std::optional<arbvp::ProgramKind> stage;
+  if (!ResolveStage(options.common, &stage)) return Exit::Usage;
+  std::optional<compiler::LimitProfile> profile;
+  if (!ResolveLimits(options.common, &profile)) return Exit::Usage;
+  std::vector<compiler::FileReport> reports;
+  Exit exit = Exit::Ok;
+  for (const Input& input : ExpandInputs(options.common.files)) {
+    compiler::FileReport report;
+    report.path = input.display_path;
+    Loaded l{input, ReadInput(input, &report), {}};
+    if (!l.source) {
+      exit = Worse(exit, Exit::Environment);
+    } else {
+      compiler::DiagnosticSink sink(options.common.error_limit);
+      arbvp::CheckOptions check;
+      check.expected_kind = stage;
+      check.profile = profile ? &*profile : nullptr;
+      l.checked = arbvp::CheckProgram(*l.source, check, &sink);
+      if (options.common.werror) sink.PromoteWarnings();
+      if (!l.checked.ok || !l.checked.program || sink.error_count() > 0) {
+        exit = Worse(exit, Exit::Rejected);
+      }
+      report.diagnostics = std::move(sink.diagnostics());
+      report.dropped_errors = sink.dropped();
+      loaded->push_back(std::move(l));
+    }
+    if (!report.diagnostics.empty()) reports.push_back(std::move(report));
+  }
+  CommonOptions text = options.common;
+  text.format = "text";  // stdout may hold GLSL: diagnostics go to stderr
+  if (!reports.empty()) PrintReports(reports, text);
+  return exit;
+}
+
+std::string Stem(const Input& input) {
+  if (input.path == "-") return "stdin";
+  return fs::path(input.path).stem().string();
+}
+
+bool Write(const std::string& path, const std::string& text) {
+  std::string error;
+  if (compiler::WriteFileAtomically(path, text, &error)) return true;
+  fmt::print(stderr, "arbiter: error: cannot write '{}': {}\n", path, error);
+  return false;
+}
+
+// Where a job's files go: `base` + ".vert"/".frag"/".bindings.json" when writing files.
+struct Destination {
+  bool to_stdout = true;
+  std::string base;      // path without extension
+  std::string bindings;  // the bindings file ("" for none)
+};
+
+Destination Place(const TranslateCommandOptions& options, const Job& job, bool several) {
+  Destination d;
+  if (!options.output.empty()) {
+    d.to_stdout = false;
+    if (several) {
+      d.base = (fs::path(options.output) / job.stem).string();
+    } else {
+      fs::path p(options.output);
+      std::string ext = p.extension().string();
+      d.base = (ext == ".vert" || ext == ".frag" || ext == ".glsl" || ext == ".vs" || ext == ".fs")
+                   ? (p.parent_path() / p.stem()).string()
+                   : options.output;
+    }
+  }
+  if (!options.bindings.empty()) {
+    d.bindings = several ? (fs::path(options.bindings) / (job.stem + ".bindings.json")).string()
+                         : options.bindings;
+  }
+  return d;
+}
+
+// The output file of one shader: exactly -o's path for a single program alone.
+std::string ShaderPath(const TranslateCommandOptions& options, const Destination& d, bool several,
+                       const Job& job, bool vertex) {
+  if (!several && !(job.vertex && job.fragment)) return options.output;
+  return d.base + (vertex ? ".vert" : ".frag");
+}
+
+Exit RunJob(const TranslateCommandOptions& options, const Job& job, bool several) {
+  arbvp::EmitOptions emit;
+  emit.comments = !options.no_comments;
+  arbvp::LookupMutation(options.mutation, &emit.mutation);
+  runtime::CheckedTranslation t =
+      runtime::TranslateChecked(job.vertex ? job.vertex->checked.program.get() : nullptr,
+                                job.fragment ? job.fragment->checked.program.get() : nullptr, emit,
+                                job.vertex ? job.vertex->source.get() : nullptr,
+                                job.fragment ? job.fragment->source.get() : nullptr);
+  std::string name = job.vertex && job.fragment
+                         ? job.vertex->input.display_path + " + " + job.fragment->input.display_path
+                     : job.vertex ? job.vertex->input.display_path
+                                  : job.fragment->input.display_path;
+  if (!t.ok) {
+    fmt::print(stderr,
+               "arbiter: internal error: the translation of {} is not valid GLSL 1.10 ({}); "
+               "nothing was written. This is a bug in arbiter's translator: please report it "
+               "with the program.\n",
+               name, t.error);
+    return Exit::Environment;
+  }
+  Destination d = Place(options, job, several);
+  if (d.to_stdout) {
+    if (!t.vertex.empty() && !t.fragment.empty()) {
+      fmt::print("// ---- vertex shader ----\n{}// ---- fragment shader ----\n{}", t.vertex,
+                 t.fragment);
+    } else {
+      fmt::print("{}", t.vertex.empty() ? t.fragment : t.vertex);
+    }
+  } else {
+    if (!t.vertex.empty() && !Write(ShaderPath(options, d, several, job, true), t.vertex)) {
+      return Exit::Environment;
+    }
+    if (!t.fragment.empty() && !Write(ShaderPath(options, d, several, job, false), t.fragment)) {
+      return Exit::Environment;
+    }
+  }
+  if (!d.bindings.empty() && !Write(d.bindings, arbvp::BindingMapToJson(t.bindings))) {
+    return Exit::Environment;
+  }
+  return Exit::Ok;
+}
+
+int RunTranslate(const TranslateCommandOptions& options) {
+  arbvp::Mutation mutation;
+  if (!arbvp::LookupMutation(options.mutation, &mutation)) {
+    fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
+    return static_cast<int>(Exit::Usage);
+  }
+  std::vector<Loaded> loaded;
+  Exit exit = Load(options, &loaded);
+  if (exit != Exit::Ok) return static_cast<int>(exit);
+
+  std::vector<Job> jobs;
+  if (options.pair) {
+    Job job;
+    int vertices = 0;
+    for (const Loaded& l : loaded) {
+      bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
+      vertices += vp ? 1 : 0;
+      (vp ? job.vertex : job.fragment) = &l;
+    }
+    if (loaded.size() != 2 || vertices != 1) {
+      fmt::print(stderr,
+                 "arbiter: error: --pair takes one vertex program and one fragment program\n");
+      return static_cast<int>(Exit::Usage);
+    }
+    job.stem = Stem(job.vertex->input);
+    jobs.push_back(job);
+  } else {
+    for (const Loaded& l : loaded) {
+      Job job;
+      (l.checked.program->kind == arbvp::ProgramKind::Vertex ? job.vertex : job.fragment) = &l;
+      job.stem = Stem(l.input);
+      jobs.push_back(job);
+    }
+  }
+  const bool several = jobs.size() > 1;
+  if (several && options.output.empty() && !options.bindings.empty()) {
+    fmt::print(stderr, "arbiter: error: several programs need -o DIR for their shaders\n");
+    return static_cast<int>(Exit::Usage);
+  }
+  for (const std::string* dir : {&options.output, &options.bindings}) {
+    if (!several || dir->empty()) continue;
+    std::error_code ec;
+    fs::create_directories(*dir, ec);
+    if (ec) {
+      fmt::print(stderr, "arbiter: error: cannot create directory '{}': {}\n", *dir, ec.message());
+      return static_cast<int>(Exit::Environment);
+    }
+  }
+  // Two inputs with one stem would overwrite each other's files.
+  if (several && !options.output.empty()) {
+    std::set<std::string> seen;
+    for (const Job& job : jobs) {
+      std::string key = job.stem + (job.vertex ? ".vert" : ".frag");
+      if (!seen.insert(key).second) {
+        fmt::print(stderr, "arbiter: error: two inputs would both write '{}' in '{}'\n", key,
+                   options.output);
+        return static_cast<int>(Exit::Usage);
+      }
+    }
+  }
+  for (const Job& job : jobs) exit = Worse(exit, RunJob(options, job, several));
+  return static_cast<int>(exit);
+}
+
+}  // namespace
+
+// Adds the `translate` subcommand to `app`; the returned function runs it once parsed.
+std::function<int()> AddTranslateCommand(CLI::App* app) {
+  auto options = std::make_shared<TranslateCommandOptions>();
+  CLI::App* cmd =
+      app->add_subcommand("translate", "translate ARB programs to GLSL 1.10 (exact semantics)");
+  cmd->footer(
+      "One input: GLSL to stdout or to -o FILE. Several inputs: -o DIR gets NAME.vert / "
+      "NAME.frag per program. --pair translates a vertex and a fragment program into one GLSL "
+      "program with matching varyings (-o BASE writes BASE.vert and BASE.frag). Every "
+      "translation is compiled by glslang first; files are written atomically.");
+  CommonOptions& common = options->common;
+  cmd->add_option("files", common.files, "ARB programs (files, directories, '-')")->required();
+  cmd->add_option("-o,--output", options->output, "output file (one program) or directory");
+  cmd->add_option("--bindings", options->bindings,
+                  "write the binding map (uniforms, attributes, samplers) as JSON to this file "
+                  "(or directory, with several programs)");
+  cmd->add_flag("--pair", options->pair, "translate a vertex and a fragment program as a pair");
+  cmd->add_flag("--no-comments", options->no_comments,
+                "do not precede statements with the ARB instruction");
+  cmd->add_option("--stage", common.stage, "the kind of a program read from stdin")
+      ->check(CLI::IsMember({"arbvp", "arbfp"}));
+  cmd->add_option("--limits", common.limits, "limit profile for checking the inputs");
+  cmd->add_option("--color", common.color, "colour diagnostics")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  cmd->add_option("--error-limit", common.error_limit, "stop reporting errors after N")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
+  // Test-only: inject one translator bug, to prove that `verify` catches it.
+  cmd->add_option("--mutation", options->mutation)->group("");
+  return [options] { return RunTranslate(*options); };
+}
+
+}  // namespace arbiter::cli

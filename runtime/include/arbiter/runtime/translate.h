@@ -1,0 +1,31 @@
+// Translating ARB programs to GLSL 1.10 with a self-check: every translation is compiled
+// (and, for a pair, linked) by glslang before anyone sees it, so a translator bug surfaces
+// as an internal error, never as a silently wrong file.
+#pragma once
+
+#include <string>
+
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/ir.h"
+#include "arbiter/compiler/source.h"
+
+namespace arbiter::runtime {
+
+struct CheckedTranslation {
+  bool ok = false;
+  std::string vertex;    // the vertex shader (empty when only a fragment program was given)
+  std::string fragment;  // the fragment shader (empty when only a vertex program was given)
+  arbvp::BindingMap bindings;
+  // When !ok: what glslang said about the translation, lower case, with the shader text's
+  // line ("the GLSL vertex shader does not compile: 12:5: 'x' : undeclared identifier").
+  std::string error;
+};
+
+// Translates a vertex program, a fragment program, or both as a pair (either may be null,
+// not both; each checked without errors), and checks the result with glslang.
+CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::Program* fragment,
+                                    const arbvp::EmitOptions& options,
+                                    const compiler::SourceFile* vertex_source,
+                                    const compiler::SourceFile* fragment_source);
+
+}  // namespace arbiter::runtime

@@ -1,0 +1,75 @@
+// TranslateChecked: emit, then compile (and link) the GLSL with glslang in process.
+#include <fmt/format.h>
+
+#include "arbiter/glsl/check.h"
+#include "arbiter/glsl/link.h"
+#include "arbiter/runtime/translate.h"
+
+namespace arbiter::runtime {
+namespace {
+
+// The first error of `sink` as "line:col: message [code]", or "" when there is none.
+std::string FirstError(const compiler::DiagnosticSink& sink) {
+  for (const compiler::Diagnostic& d : sink.diagnostics()) {
+    if (d.severity != compiler::Severity::Error) continue;
+    compiler::LineCol at = d.file ? d.file->Locate(d.range.begin) : compiler::LineCol{};
+    return fmt::format("{}:{}: {} [{}]", at.line, at.column, d.message, d.info->code);
+  }
+  return "";
+}
+
+}  // namespace
+
+CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::Program* fragment,
+                                    const arbvp::EmitOptions& options,
+                                    const compiler::SourceFile* vertex_source,
+                                    const compiler::SourceFile* fragment_source) {
+  CheckedTranslation out;
+  if (vertex && fragment) {
+    arbvp::PairTranslation pair =
+        arbvp::EmitGlslPair(*vertex, *fragment, options, vertex_source, fragment_source);
+    out.vertex = std::move(pair.vertex);
+    out.fragment = std::move(pair.fragment);
+    out.bindings = std::move(pair.bindings);
+  } else if (vertex || fragment) {
+    const arbvp::Program* one = vertex ? vertex : fragment;
+    arbvp::Translation t = arbvp::EmitGlsl(*one, options, vertex ? vertex_source : fragment_source);
+    (vertex ? out.vertex : out.fragment) = std::move(t.glsl);
+    out.bindings = std::move(t.bindings);
+  } else {
+    out.error = "nothing to translate";
+    return out;
+  }
+
+  compiler::SourceFile vs("translation.vert", out.vertex);
+  compiler::SourceFile fs("translation.frag", out.fragment);
+  // Each shader alone (linked as a single shader, as `arbiter check` does), then the pair.
+  struct Shader {
+    const compiler::SourceFile* file;
+    glsl::Stage stage;
+    const char* name;
+  };
+  const Shader shaders[] = {{&vs, glsl::Stage::Vertex, "vertex"},
+                            {&fs, glsl::Stage::Fragment, "fragment"}};
+  for (const Shader& s : shaders) {
+    if (s.file->text().empty()) continue;
+    compiler::DiagnosticSink sink(0);
+    glsl::CheckOptions check;
+    check.link_as_program = s.stage == glsl::Stage::Vertex && vertex != nullptr;
+    if (!glsl::CheckShader(s.stage, {s.file}, check, &sink).ok) {
+      out.error = fmt::format("the GLSL {} shader does not compile: {}", s.name, FirstError(sink));
+      return out;
+    }
+  }
+  if (vertex && fragment) {
+    compiler::DiagnosticSink sink(0);
+    if (!glsl::LinkProgram({&vs}, {&fs}, glsl::LinkOptions{}, &sink).ok) {
+      out.error = fmt::format("the GLSL shaders do not link: {}", FirstError(sink));
+      return out;
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+}  // namespace arbiter::runtime
