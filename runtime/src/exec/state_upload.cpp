@@ -45,7 +45,8 @@ void UploadGlState(const ExecGl& gl, const arbvp::GlState& state) {
     UploadLight(gl, i, state.light[static_cast<size_t>(i)]);
   for (int i = 0; i < arbvp::kMaxClipPlanes; ++i) {
     const arbvp::Vec4& p = state.clip_plane[static_cast<size_t>(i)];
-    const GLdouble plane[4] = {p[0], p[1], p[2], p[3]};
+    const GLdouble plane[4] = {static_cast<GLdouble>(p[0]), static_cast<GLdouble>(p[1]),
+                               static_cast<GLdouble>(p[2]), static_cast<GLdouble>(p[3])};
     gl.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + i), plane);
   }
   for (int unit = 0; unit < arbvp::kMaxTextureUnits; ++unit) {
@@ -77,7 +78,7 @@ void UploadGlState(const ExecGl& gl, const arbvp::GlState& state) {
   gl.PointParameterf(GL_POINT_SIZE_MAX, state.point_size_max);
   gl.PointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, state.point_fade_threshold);
   gl.PointParameterfv(GL_POINT_DISTANCE_ATTENUATION, state.point_attenuation.data());
-  gl.DepthRange(state.depth_near, state.depth_far);
+  gl.DepthRange(static_cast<GLclampd>(state.depth_near), static_cast<GLclampd>(state.depth_far));
 }
 
 void UploadEnvParameters(const ExecGl& gl, GLenum target, const std::map<int, arbvp::Vec4>& env) {
