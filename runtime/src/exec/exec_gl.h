@@ -1,4 +1,5 @@
-// The GL entry points the executor calls, loaded through the context's GetProcAddress
+// The GL entry points the executor calls (ARB programs, and GL 2.0 shader objects for the
+// GLSL engine), loaded through the context's GetProcAddress
 // (OSMesaGetProcAddress or eglGetProcAddress): nothing refers to libGL's symbols.
 #pragma once
 
@@ -77,7 +78,25 @@ namespace arbiter::runtime::exec {
   X(PFNGLGETPROGRAMIVARBPROC, GetProgramivARB, "glGetProgramivARB")                               \
   X(PFNGLPROGRAMENVPARAMETER4FVARBPROC, ProgramEnvParameter4fvARB, "glProgramEnvParameter4fvARB") \
   X(PFNGLPROGRAMLOCALPARAMETER4FVARBPROC, ProgramLocalParameter4fvARB,                            \
-    "glProgramLocalParameter4fvARB")
+    "glProgramLocalParameter4fvARB")                                                              \
+  X(PFNGLCREATESHADERPROC, CreateShader, "glCreateShader")                                        \
+  X(PFNGLSHADERSOURCEPROC, ShaderSource, "glShaderSource")                                        \
+  X(PFNGLCOMPILESHADERPROC, CompileShader, "glCompileShader")                                     \
+  X(PFNGLGETSHADERIVPROC, GetShaderiv, "glGetShaderiv")                                           \
+  X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog, "glGetShaderInfoLog")                            \
+  X(PFNGLDELETESHADERPROC, DeleteShader, "glDeleteShader")                                        \
+  X(PFNGLCREATEPROGRAMPROC, CreateProgram, "glCreateProgram")                                     \
+  X(PFNGLATTACHSHADERPROC, AttachShader, "glAttachShader")                                        \
+  X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation, "glBindAttribLocation")                      \
+  X(PFNGLLINKPROGRAMPROC, LinkProgram, "glLinkProgram")                                           \
+  X(PFNGLGETPROGRAMIVPROC, GetProgramiv, "glGetProgramiv")                                        \
+  X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog, "glGetProgramInfoLog")                         \
+  X(PFNGLUSEPROGRAMPROC, UseProgram, "glUseProgram")                                              \
+  X(PFNGLDELETEPROGRAMPROC, DeleteProgram, "glDeleteProgram")                                     \
+  X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation, "glGetUniformLocation")                      \
+  X(PFNGLUNIFORM4FVPROC, Uniform4fv, "glUniform4fv")                                              \
+  X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i")                                                 \
+  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv, "glUniformMatrix4fv")
 
 struct ExecGl {
 #define ARBITER_EXEC_GL_MEMBER(type, member, name) type member = nullptr;

@@ -15,6 +15,7 @@
 #include "exec/program_rewrite.h"
 #include "exec/state_upload.h"
 #include "exec/textures.h"
+#include "exec_glsl/glsl_run.h"
 
 namespace arbiter::runtime {
 namespace {
@@ -67,6 +68,21 @@ class MesaArbExecutor final : public ArbExecutor {
     DrainErrors(gl_);
     context_->Release();
     if (!ok) results->clear();
+    return ok;
+  }
+
+  bool RunTranslated(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                     const arbvp::ExecInputs& inputs, std::vector<arbvp::VectorResult>* results,
+                     std::string* error) override {
+    results->clear();
+    if (!context_->MakeCurrent()) {
+      *error = "cannot make the GL context current";
+      return false;
+    }
+    DrainErrors(gl_);
+    bool ok = exec::RunGlslTranslation(gl_, limits_, programs, emit, inputs, results, error);
+    DrainErrors(gl_);
+    context_->Release();
     return ok;
   }
 

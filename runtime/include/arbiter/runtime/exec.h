@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "arbiter/arbvp/emit.h"
 #include "arbiter/arbvp/exec.h"
 #include "arbiter/arbvp/ir.h"
 
@@ -41,6 +42,18 @@ class ArbExecutor {
   // program, GL error, incomplete framebuffer) returns false and sets `error`.
   virtual bool Run(const ArbPrograms& programs, const arbvp::ExecInputs& inputs,
                    std::vector<arbvp::VectorResult>* results, std::string* error) = 0;
+  // The mesa-glsl engine: runs the GLSL translation of the program(s) (TranslateChecked with
+  // `emit`, mutations included) on the same context and inputs, with results in Run's shape
+  // and register names so that the two compare 1:1. The translation's main becomes a
+  // function whose output built-ins are read back through a generated main (a vertex shader
+  // alone through varyings to a generated fragment shader, a fragment shader alone fed by a
+  // generated vertex shader), with Run's colour clamping. GLSL has only x of
+  // result.fogcoord and result.pointsize and z of result.depth: their written masks keep
+  // only those. Fails (with `error`) where Run would, when the translation fails its
+  // self-check, or when Mesa rejects the adapted shaders.
+  virtual bool RunTranslated(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                             const arbvp::ExecInputs& inputs,
+                             std::vector<arbvp::VectorResult>* results, std::string* error) = 0;
 };
 
 // Creates the context (validating the driver name first, disabling the shader cache). On

@@ -1,0 +1,170 @@
+// The mesa-glsl engine: see glsl_run.h. The same GL state, textures, points and framebuffer
+// as the ARB engine (executor.cpp), with GLSL program objects instead of ARB programs.
+#include "exec_glsl/glsl_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "arbiter/runtime/translate.h"
+#include "exec/draw.h"
+#include "exec/framebuffer.h"
+#include "exec/state_upload.h"
+#include "exec/textures.h"
+#include "exec_glsl/glsl_adapt.h"
+#include "exec_glsl/glsl_program.h"
+
+namespace arbiter::runtime::exec {
+namespace {
+
+bool Check(const ExecGl& gl, const char* step, std::string* error) {
+  const GLenum code = gl.GetError();
+  if (code == GL_NO_ERROR) return true;
+  *error = fmt::format("{} raised {}", step, GlErrorName(code));
+  return false;
+}
+
+// As the ARB engine's SetFixedState, with the ARB program targets off (a current GLSL
+// program wins anyway) and the same colour clamping: on for a pair, off otherwise.
+void SetFixedState(const ExecGl& gl, RunMode mode) {
+  gl.ClampColorARB(GL_CLAMP_VERTEX_COLOR_ARB, mode == RunMode::Pair ? GL_TRUE : GL_FALSE);
+  gl.ClampColorARB(GL_CLAMP_FRAGMENT_COLOR_ARB, GL_FALSE);
+  gl.ClampColorARB(GL_CLAMP_READ_COLOR_ARB, GL_FALSE);
+  gl.Disable(GL_VERTEX_PROGRAM_ARB);
+  gl.Disable(GL_FRAGMENT_PROGRAM_ARB);
+  gl.Enable(GL_VERTEX_PROGRAM_POINT_SIZE);  // gl_PointSize (the ARB enum's value)
+  for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_POINT_SMOOTH, GL_POINT_SPRITE_ARB, GL_CULL_FACE,
+                     GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_FOG}) {
+    gl.Disable(cap);
+  }
+}
+
+// GLSL has one component of these registers (glsl_run.h).
+uint8_t GlslComponents(const arbvp::Binding& b) {
+  switch (b.result) {
+    case arbvp::ResultReg::FogCoord:
+    case arbvp::ResultReg::PointSize:
+      return 0x1;
+    case arbvp::ResultReg::FragDepth:
+      return 0x4;
+    default:
+      return 0xF;
+  }
+}
+
+void Collect(const RunPlan& plan, const std::vector<std::vector<float>>& values,
+             const std::vector<float>& alive, std::vector<arbvp::VectorResult>* results) {
+  const arbvp::ProgramKind kind =
+      plan.mode == RunMode::Vertex ? arbvp::ProgramKind::Vertex : arbvp::ProgramKind::Fragment;
+  for (size_t i = 0; i < results->size(); ++i) {
+    const arbvp::Pixel pixel = arbvp::FragmentPixel(i);
+    const size_t offset =
+        (static_cast<size_t>(pixel.y) * arbvp::kFramebufferWidth + static_cast<size_t>(pixel.x)) *
+        4;
+    arbvp::VectorResult& result = (*results)[i];
+    if (!alive.empty() && alive[offset] != 1.0f) {
+      result.killed = true;
+      continue;
+    }
+    for (size_t s = 0; s < plan.outputs.size(); ++s) {
+      arbvp::OutputRegister out;
+      out.binding = plan.outputs[s].binding;
+      out.name = arbvp::BindingName(out.binding, kind);
+      out.written = plan.outputs[s].written & GlslComponents(out.binding);
+      for (size_t c = 0; c < 4; ++c) out.value[c] = values[s][offset + c];
+      result.outputs.push_back(std::move(out));
+    }
+  }
+}
+
+struct Run {
+  const ExecGl& gl;
+  const RunPlan& plan;
+  const CheckedTranslation& translation;
+  const ArbPrograms& programs;
+  const arbvp::ExecInputs& inputs;
+
+  bool Pass(const GlslPass& pass, int width, int height, Framebuffer* framebuffer,
+            std::vector<std::vector<float>>* values, std::vector<float>* alive,
+            std::string* error) const {
+    const GLuint program = LinkGlslPass(gl, pass, translation.bindings, plan, error);
+    if (program == 0) return false;
+    gl.UseProgram(program);
+    bool ok = SetGlslUniforms(gl, program, translation.bindings, programs, inputs, error) &&
+              Check(gl, "setting the uniforms", error);
+    if (ok) {
+      framebuffer->Begin(static_cast<int>(pass.attachments.size()));
+      DrawPoints(gl, plan, inputs, width, height);
+      ok = Check(gl, "drawing the points", error);
+    }
+    for (size_t a = 0; ok && a < pass.attachments.size(); ++a) {
+      const int slot = pass.attachments[a];
+      if (slot == kAliveFlag && !alive->empty()) continue;  // one pass says it
+      framebuffer->Read(static_cast<int>(a),
+                        slot == kAliveFlag ? alive : &(*values)[static_cast<size_t>(slot)]);
+      ok = Check(gl, "reading the framebuffer back", error);
+    }
+    gl.UseProgram(0);
+    gl.DeleteProgram(program);
+    return ok;
+  }
+};
+
+}  // namespace
+
+bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const ArbPrograms& programs,
+                        const arbvp::EmitOptions& emit, const arbvp::ExecInputs& inputs,
+                        std::vector<arbvp::VectorResult>* results, std::string* error) {
+  results->clear();
+  RunPlan plan;
+  if (!PlanRun(programs, limits, &plan, error)) return false;
+  if (plan.mode != RunMode::Fragment && plan.position_attrib < 0) {
+    *error =
+        "the vertex program reads every generic attribute: none is left for the point's "
+        "position (the GLSL engine has no program.env fallback)";
+    return false;
+  }
+  const CheckedTranslation translation =
+      TranslateChecked(programs.vertex, programs.fragment, emit, nullptr, nullptr);
+  if (!translation.ok) {
+    *error = "the translation failed its self-check: " + translation.error;
+    return false;
+  }
+  const int max_attachments = std::min(limits.max_draw_buffers, 8);
+  std::vector<GlslPass> passes;
+  if (!PlanGlslPasses(plan, translation, max_attachments, &passes, error)) return false;
+
+  const size_t count = inputs.vectors.size();
+  results->assign(count, arbvp::VectorResult{});
+  if (count == 0 || passes.empty()) return true;
+  const int width = arbvp::kFramebufferWidth;
+  const int height =
+      static_cast<int>((count + static_cast<size_t>(width) - 1) / static_cast<size_t>(width));
+  size_t attachments = 1;
+  for (const GlslPass& pass : passes) attachments = std::max(attachments, pass.attachments.size());
+
+  SetFixedState(gl, plan.mode);
+  UploadGlState(gl, inputs.state);
+  if (!Check(gl, "setting the GL state", error)) return false;
+  std::vector<GLuint> textures;
+  bool ok = UploadTextures(gl, inputs.textures, &textures, error) &&
+            Check(gl, "creating the textures", error);
+  if (ok) {
+    Framebuffer framebuffer(gl);
+    ok = framebuffer.Create(width, height, static_cast<int>(attachments), error) &&
+         Check(gl, "creating the framebuffer", error);
+    std::vector<std::vector<float>> values(plan.outputs.size());
+    std::vector<float> alive;
+    const Run run{gl, plan, translation, programs, inputs};
+    for (size_t p = 0; ok && p < passes.size(); ++p) {
+      ok = run.Pass(passes[p], width, height, &framebuffer, &values, &alive, error);
+    }
+    if (ok) Collect(plan, values, alive, results);
+  }
+  DeleteTextures(gl, &textures);
+  ok = ok && Check(gl, "cleaning up", error);
+  if (!ok) results->clear();
+  return ok;
+}
+
+}  // namespace arbiter::runtime::exec

@@ -1,0 +1,27 @@
+// The mesa-glsl engine: runs the GLSL translation of ARB programs on the executor's context
+// (ArbExecutor::RunTranslated).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/exec.h"
+#include "arbiter/runtime/exec.h"
+#include "exec/exec_gl.h"
+#include "exec/program_rewrite.h"
+
+namespace arbiter::runtime::exec {
+
+// Translates `programs` (with the glslang self-check), adapts the shaders for readback
+// (glsl_adapt.h) and runs them on `inputs` in the current context. Results as
+// ArbExecutor::Run gives them, except that the written mask of result.fogcoord and
+// result.pointsize keeps only x, and that of result.depth only z: GLSL carries no other
+// component of them.
+[[nodiscard]] bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits,
+                                      const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                                      const arbvp::ExecInputs& inputs,
+                                      std::vector<arbvp::VectorResult>* results,
+                                      std::string* error);
+
+}  // namespace arbiter::runtime::exec
