@@ -80,4 +80,31 @@ void DrawPoints(const ExecGl& gl, const RunPlan& plan, const arbvp::ExecInputs& 
   if (!per_point) gl.End();
 }
 
+void CollectResults(const RunPlan& plan, const std::vector<std::vector<float>>& values,
+                    const std::vector<float>& alive, uint8_t (*written_mask)(const arbvp::Binding&),
+                    std::vector<arbvp::VectorResult>* results) {
+  const arbvp::ProgramKind kind =
+      plan.mode == RunMode::Vertex ? arbvp::ProgramKind::Vertex : arbvp::ProgramKind::Fragment;
+  for (size_t i = 0; i < results->size(); ++i) {
+    const arbvp::Pixel pixel = arbvp::FragmentPixel(i);
+    const size_t offset =
+        (static_cast<size_t>(pixel.y) * arbvp::kFramebufferWidth + static_cast<size_t>(pixel.x)) *
+        4;
+    arbvp::VectorResult& result = (*results)[i];
+    if (!alive.empty() && alive[offset] != 1.0f) {
+      result.killed = true;
+      continue;
+    }
+    for (size_t s = 0; s < plan.outputs.size(); ++s) {
+      arbvp::OutputRegister out;
+      out.binding = plan.outputs[s].binding;
+      out.name = arbvp::BindingName(out.binding, kind);
+      out.written = plan.outputs[s].written;
+      if (written_mask != nullptr) out.written &= written_mask(out.binding);
+      for (size_t c = 0; c < 4; ++c) out.value[c] = values[s][offset + c];
+      result.outputs.push_back(std::move(out));
+    }
+  }
+}
+
 }  // namespace arbiter::runtime::exec

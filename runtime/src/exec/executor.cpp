@@ -128,7 +128,7 @@ class MesaArbExecutor final : public ArbExecutor {
         ok = RunPass(plan, plan.passes[p], programs, inputs, width, height, &framebuffer, &values,
                      &alive, error);
       }
-      if (ok) Collect(plan, values, alive, results);
+      if (ok) exec::CollectResults(plan, values, alive, nullptr, results);
     }
     exec::DeleteTextures(gl_, &textures);
     return ok && Check("cleaning up", error);
@@ -207,33 +207,6 @@ class MesaArbExecutor final : public ArbExecutor {
     gl_.BindProgramARB(GL_FRAGMENT_PROGRAM_ARB, 0);
     gl_.DeleteProgramsARB(2, ids);
     return ok;
-  }
-
-  // The pixels become VectorResults: a fragment whose alive flag is 0 was killed.
-  void Collect(const exec::RunPlan& plan, const std::vector<std::vector<float>>& values,
-               const std::vector<float>& alive, std::vector<arbvp::VectorResult>* results) {
-    const arbvp::ProgramKind kind = plan.mode == exec::RunMode::Vertex
-                                        ? arbvp::ProgramKind::Vertex
-                                        : arbvp::ProgramKind::Fragment;
-    for (size_t i = 0; i < results->size(); ++i) {
-      const arbvp::Pixel pixel = arbvp::FragmentPixel(i);
-      const size_t offset =
-          (static_cast<size_t>(pixel.y) * arbvp::kFramebufferWidth + static_cast<size_t>(pixel.x)) *
-          4;
-      arbvp::VectorResult& result = (*results)[i];
-      if (!alive.empty() && alive[offset] != 1.0f) {
-        result.killed = true;
-        continue;
-      }
-      for (size_t s = 0; s < plan.outputs.size(); ++s) {
-        arbvp::OutputRegister out;
-        out.binding = plan.outputs[s].binding;
-        out.name = arbvp::BindingName(out.binding, kind);
-        out.written = plan.outputs[s].written;
-        for (size_t c = 0; c < 4; ++c) out.value[c] = values[s][offset + c];
-        result.outputs.push_back(std::move(out));
-      }
-    }
   }
 
   std::unique_ptr<exec::GlContext> context_;

@@ -52,31 +52,6 @@ uint8_t GlslComponents(const arbvp::Binding& b) {
   }
 }
 
-void Collect(const RunPlan& plan, const std::vector<std::vector<float>>& values,
-             const std::vector<float>& alive, std::vector<arbvp::VectorResult>* results) {
-  const arbvp::ProgramKind kind =
-      plan.mode == RunMode::Vertex ? arbvp::ProgramKind::Vertex : arbvp::ProgramKind::Fragment;
-  for (size_t i = 0; i < results->size(); ++i) {
-    const arbvp::Pixel pixel = arbvp::FragmentPixel(i);
-    const size_t offset =
-        (static_cast<size_t>(pixel.y) * arbvp::kFramebufferWidth + static_cast<size_t>(pixel.x)) *
-        4;
-    arbvp::VectorResult& result = (*results)[i];
-    if (!alive.empty() && alive[offset] != 1.0f) {
-      result.killed = true;
-      continue;
-    }
-    for (size_t s = 0; s < plan.outputs.size(); ++s) {
-      arbvp::OutputRegister out;
-      out.binding = plan.outputs[s].binding;
-      out.name = arbvp::BindingName(out.binding, kind);
-      out.written = plan.outputs[s].written & GlslComponents(out.binding);
-      for (size_t c = 0; c < 4; ++c) out.value[c] = values[s][offset + c];
-      result.outputs.push_back(std::move(out));
-    }
-  }
-}
-
 struct Run {
   const ExecGl& gl;
   const RunPlan& plan;
@@ -159,7 +134,7 @@ bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const Arb
     for (size_t p = 0; ok && p < passes.size(); ++p) {
       ok = run.Pass(passes[p], width, height, &framebuffer, &values, &alive, error);
     }
-    if (ok) Collect(plan, values, alive, results);
+    if (ok) CollectResults(plan, values, alive, GlslComponents, results);
   }
   DeleteTextures(gl, &textures);
   ok = ok && Check(gl, "cleaning up", error);
