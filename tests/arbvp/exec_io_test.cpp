@@ -100,7 +100,7 @@ TEST(ExecAssignment, RejectsWhatItCannotSetWithAReason) {
       {"state.fog.density=1,2", "takes 1 numbers, not 2"},
       {"vertex.color=1,x", "'x' is not a number"},
       {"vertex.attrib[a]=1", "bad index"},
-      {"program.env[96]=1", "out of range [0, 96)"},
+      {"program.env[256]=1", "out of range [0, 256)"},
   };
   for (const Case& c : cases) {
     Assigned a;

@@ -297,12 +297,15 @@ void AluCases(Table& t) {
   t.Fp1("pow", "ARBfp 3.11.5.20",
         "POW result.color.x, e0.x, e1.x;\nPOW result.color.y, e0.y, e1.y;\n"
         "POW result.color.z, e0.z, e1.z;\nPOW result.color.w, e0.w, e1.w;\n",
-        {{2, 4, 0, 3}, {10, 0.5f, 2, 0}}, {Rel(kColor, {1024, 2, 0, 1})});
+        {{2, 4, 9, 3}, {10, 0.5f, 0.5f, 0}}, {Rel(kColor, {1024, 2, 3, 1})});
   t.Fp1("pow_negative_base", "ARBfp 3.11.5.20: negative base goes through a logarithm",
         "POW result.color, e0.x, e1.x;\n", {{-2, 0, 0, 0}, {2, 0, 0, 0}},
         {Undef(kColor, 0xF, "POW with a negative base")});
   t.Fp1("pow_zero_zero", "POW(0, 0) is undefined (semantics.md)", "POW result.color, e0.x, e1.x;\n",
-        {{0, 0, 0, 0}, {0, 0, 0, 0}}, {Undef(kColor, 0xF, "POW(0, 0)")});
+        {{0, 0, 0, 0}, {0, 0, 0, 0}}, {Undef(kColor, 0xF, "POW with base 0")});
+  t.Fp1("pow_zero_base", "ARBfp 3.11.5.20: ApproxPower goes through ApproxLog2(0), undefined",
+        "POW result.color, e0.x, e1.x;\n", {{0, 0, 0, 0}, {2, 0, 0, 0}},
+        {Undef(kColor, 0xF, "POW with base 0")});
   t.Fp1("sin_cos", "ARBfp 3.11.5.25, 3.11.5.4: any angle",
         "SIN result.color.x, e0.x;\nSIN result.color.y, e0.y;\nCOS result.color.z, e0.x;\n"
         "COS result.color.w, e0.z;\n",
@@ -933,10 +936,15 @@ void FogAndOutputCases(Table& t) {
         Fp("OPTION ARB_fog_exp2;\nMOV result.color, fragment.color;\n"),
         fog_setup(0, 1, 0.5f, 4, {1, 1, 1, 1}),
         {Abs(kColor, {0.01831564f, 0.01831564f, 1, 1}, kApprox)});
-  // The colour is clamped before the blend (2 -> 1, -1 -> 0), and f = 2 clamps to 1.
+  // The colour is clamped before the blend (2 -> 1, -1 -> 0), alpha with it (3 -> 1), and
+  // f = 2 clamps to 1.
   t.Add("fog_clamps", "ARBfp 3.11.4.5.1: fog applies to the final clamped colour", "",
         Fp("OPTION ARB_fog_linear;\nMOV result.color, fragment.color;\n"),
-        fog_setup(0, 4, 1, -4, {2, -1, 0.5f, 1}), {Abs(kColor, {1, 0, 0.5f, 1}, kApprox)});
+        fog_setup(0, 4, 1, -4, {2, -1, 0.5f, 3}), {Abs(kColor, {1, 0, 0.5f, 1}, kApprox)});
+  t.Add("fog_clamps_alpha", "ARBfp 3.11.4.5.1: the final clamped colour includes alpha", "",
+        Fp("OPTION ARB_fog_exp;\nMOV result.color, fragment.color;\n"),
+        fog_setup(0, 4, 0, 1, {0.5f, 0.5f, 0.5f, -2}),
+        {Abs(kColor, {0.5f, 0.5f, 0.5f, 0}, kApprox)});
   t.Add("draw_buffers", "ARB_draw_buffers: result.color[n]", "",
         Fp("OPTION ARB_draw_buffers;\nMOV result.color[0], fragment.color;\n"
            "MOV result.color[2], fragment.texcoord[1];\n"),

@@ -8,14 +8,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 #include <map>
 #include <tuple>
 
+#include "arbiter/arbvp/deviations.h"
 #include "exec/machine.h"
 #include "exec/ops.h"
 #include "exec/state_internal.h"
+#include "exec/tolerance.h"
 
 namespace arbiter::arbvp {
 namespace {
@@ -26,6 +29,8 @@ using exec::kUnwritten;
 using exec::Reasons;
 using exec::Reg;
 using exec::Val;
+using D1 = std::array<double, 1>;
+using D2 = std::array<double, 2>;
 
 constexpr char kComponents[] = "xyzw";
 
@@ -71,10 +76,12 @@ FragmentSource FromFragmentInput(const FragmentInput& in, size_t vector_index) {
   f.color = exec::DefinedReg(in.color);
   f.secondary = exec::DefinedReg(in.secondary_color);
   for (size_t i = 0; i < f.texcoord.size(); ++i) f.texcoord[i] = exec::DefinedReg(in.texcoord[i]);
-  f.fogcoord = Val{in.fogcoord};
+  f.fogcoord = exec::InputVal(in.fogcoord);
   Pixel p = FragmentPixel(vector_index);
   f.position = exec::DefinedReg(
       {static_cast<float>(p.x) + 0.5f, static_cast<float>(p.y) + 0.5f, in.depth, 1.0f});
+  // The window z goes through the depth range transform and a depth format.
+  f.position[2].err = static_cast<float>(exec::kDepthPrecision);
   return f;
 }
 
@@ -136,10 +143,45 @@ Reg FragmentAttribValue(const Binding& b, const FragmentSource& f) {
   return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
 }
 
+// State the driver derives (products, inverses, half vectors, cosines) carries its float32
+// computation: kApprox of the largest element of the vector (of the whole matrix for a row).
+float DerivedStateError(const GlState& state, const Binding& b) {
+  bool derived = false;
+  switch (b.state) {
+    case StateItem::MatrixRow:
+      derived = b.matrix == MatrixName::Mvp || b.modifier == MatrixModifier::Inverse ||
+                b.modifier == MatrixModifier::InvTrans;
+      break;
+    case StateItem::LightSpotDirection:
+    case StateItem::LightHalf:
+    case StateItem::LightModelSceneColor:
+    case StateItem::LightProdAmbient:
+    case StateItem::LightProdDiffuse:
+    case StateItem::LightProdSpecular:
+    case StateItem::FogParams:
+      derived = true;
+      break;
+    default:
+      break;
+  }
+  if (!derived) return 0.0f;
+  double largest = 0.0;
+  Binding row = b;
+  for (uint8_t r = 0; r < (b.state == StateItem::MatrixRow ? 4 : 1); ++r) {
+    if (b.state == StateItem::MatrixRow) row.row = r;
+    for (float v : ReadStateBinding(state, row)) {
+      largest = std::max(largest, std::fabs(static_cast<double>(v)));
+    }
+  }
+  return exec::RoundUp(exec::kApprox * largest);
+}
+
 Vec4 ParamValue(const std::map<int, Vec4>& params, int32_t index) {
   auto it = params.find(index);
   return it == params.end() ? Vec4{0.0f, 0.0f, 0.0f, 0.0f} : it->second;
 }
+
+double Clamp01(const D1& x) { return x[0] < 0.0 ? 0.0 : (x[0] > 1.0 ? 1.0 : x[0]); }
 
 // One execution of one program on one input.
 class Run {
@@ -163,11 +205,15 @@ class Run {
       ctx.killed = killed_;
       ctx.killed_defined = killed_defined_;
       ctx.kill_why = kill_why_;
+      ctx.kill_unstable = kill_unstable_;
+      ctx.kill_dev = kill_dev_;
       for (size_t s = 0; s < inst.src_count; ++s) ctx.src[s] = Load(inst.src[s], ctx.where);
       Reg result = exec::Execute(inst.op, ctx);
       killed_ = ctx.killed;
       killed_defined_ = ctx.killed_defined;
       kill_why_ = ctx.kill_why;
+      kill_unstable_ = ctx.kill_unstable;
+      kill_dev_ = ctx.kill_dev;
       Store(inst, result);
     }
   }
@@ -176,6 +222,8 @@ class Run {
   bool killed() const { return killed_; }
   // The reason whether the fragment was killed is undefined, or kDefined.
   int kill_why() const { return killed_defined_ ? kDefined : kill_why_; }
+  bool kill_unstable() const { return kill_unstable_; }
+  uint32_t kill_dev() const { return kill_dev_; }
 
  private:
   const ProgramParameters& Params() const {
@@ -210,9 +258,14 @@ class Run {
       case BindingKind::State: {
         Vec4 v = ReadStateBinding(inputs_.state, b);
         std::string why = StateBindingUndefined(inputs_.state, b);
-        if (why.empty()) return exec::DefinedReg(v);
-        return exec::UndefinedReg(
-            v, reasons_->Add(fmt::format("{}: {}", BindingName(b, program_.kind), why)));
+        Reg r =
+            why.empty()
+                ? exec::DefinedReg(v)
+                : exec::UndefinedReg(
+                      v, reasons_->Add(fmt::format("{}: {}", BindingName(b, program_.kind), why)));
+        float err = DerivedStateError(inputs_.state, b);
+        for (Val& c : r) c.err = std::max(c.err, err);
+        return r;
       }
       case BindingKind::VertexAttrib:
       case BindingKind::FragmentAttrib:
@@ -265,6 +318,11 @@ class Run {
     int64_t index = finite ? static_cast<int64_t>(addr.v) + src.index : -1;
     if (!finite || index < 0 || index >= static_cast<int64_t>(elements.size())) {
       if (addr.why != kDefined) return exec::UndefinedReg({0, 0, 0, 0}, addr.why);
+      if (addr.err > 0.0f) {
+        Reg r = exec::DefinedReg({0, 0, 0, 0});
+        for (Val& c : r) c.err = exec::kUnstable;
+        return r;
+      }
       return exec::UndefinedReg(
           {0.0f, 0.0f, 0.0f, 0.0f},
           reasons_->Add(fmt::format("relative address {}.x{} = {} outside '{}[0..{}]'{}",
@@ -272,8 +330,10 @@ class Run {
                                     where)));
     }
     Reg r = elements[static_cast<size_t>(index)];
-    if (addr.why != kDefined) {
-      for (Val& c : r) c.why = addr.why;
+    for (Val& c : r) {
+      if (addr.why != kDefined) c.why = addr.why;
+      if (addr.err > 0.0f) c.err = exec::kUnstable;  // another element may be selected
+      c.dev |= addr.dev;
     }
     return r;
   }
@@ -313,11 +373,14 @@ class Run {
     if (inst.saturate) {
       // 3.11.4.3: "if (result.x < 0) result.x = 0; else if (result.x > 1) result.x = 1;"
       for (Val& v : result) {
+        Val in = v;
         if (v.v < 0.0f) {
           v.v = 0.0f;
         } else if (v.v > 1.0f) {
           v.v = 1.0f;
         }
+        v.err = exec::CornerBound<1>(v.v, {in}, Clamp01, 0.0);
+        if (std::isnan(in.v)) v.dev |= kDevNanClamp;
       }
     }
     const Variable& var = program_.vars[static_cast<size_t>(inst.dst.var)];
@@ -349,6 +412,8 @@ class Run {
   bool killed_ = false;
   bool killed_defined_ = false;
   int kill_why_ = kDefined;
+  bool kill_unstable_ = false;
+  uint32_t kill_dev_ = 0;
 };
 
 std::vector<Reg> VertexAttribs(const Program& program, const VertexInput& in) {
@@ -385,46 +450,101 @@ void AddInvariantPosition(const ExecInputs& inputs, const VertexInput& in, Outpu
   Output& out = (*outputs)[KeyOf(b)];
   out.binding = b;
   out.value = exec::DefinedReg({clip.x, clip.y, clip.z, clip.w});
+  // Any order of the two transforms' products and sums (GL may use the product matrix).
+  glm::mat4 amv = inputs.state.modelview;
+  glm::mat4 ap = inputs.state.projection;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      amv[i][j] = std::fabs(amv[i][j]);
+      ap[i][j] = std::fabs(ap[i][j]);
+    }
+  }
+  glm::vec4 magnitude = ap * (amv * glm::abs(object));
+  glm::vec4 flushed(0.0f);  // denormal inputs a driver may flush
+  for (int i = 0; i < 4; ++i) flushed[i] = exec::InputVal(object[i]).err;
+  glm::vec4 carried = ap * (amv * flushed);
+  for (int i = 0; i < 4; ++i) {
+    Val& v = out.value[static_cast<size_t>(i)];
+    double e = 8.0 * exec::kRounding * static_cast<double>(magnitude[i]) +
+               static_cast<double>(carried[i]) + static_cast<double>(v.err);
+    v.err = exec::RoundUp(e);
+  }
   out.written = 0xF;
 }
 
 // ARBfp 3.11.4.5.1: fog (GL 2.0 section 3.10) applied to the program's final clamped colour:
 // C = f * clamp(Cr) + (1 - f) * Cf for r, g, b with f clamped to [0, 1] and Cf the fog
-// colour (clamped when specified, so here); alpha is not changed (and, as every output,
-// not clamped: the engines read unclamped colour buffers).
+// colour (clamped when specified, so here); alpha is clamped and not blended. (Without a
+// fog option no output is clamped: the engines read unclamped colour buffers.)
 void ApplyFog(const Program& program, const GlState& state, Val c, Reasons* reasons,
               Outputs* outputs) {
+  double start = state.fog_start;
+  double end = state.fog_end;
+  double density = state.fog_density;
   float f = 0.0f;
+  float f_err = 0.0f;
   int why = c.why;
   if (program.HasOption(OptionId::FogLinear)) {
     f = (state.fog_end - c.v) / (state.fog_end - state.fog_start);
     if (state.fog_end == state.fog_start && why == kDefined) {
       why = reasons->Add("ARB_fog_linear with fog start == fog end");
     }
+    f_err = exec::CornerBound<1>(
+        f, {c}, [&](const D1& x) { return (end - x[0]) / (end - start); }, std::fabs(f), 0.0);
   } else if (program.HasOption(OptionId::FogExp)) {
     f = std::exp(-(state.fog_density * c.v));
+    f_err = exec::CornerBound<1>(
+        f, {c}, [&](const D1& x) { return std::exp(-(density * x[0])); }, 0.0, exec::kApprox);
   } else if (program.HasOption(OptionId::FogExp2)) {
     float dc = state.fog_density * c.v;
     f = std::exp(-(dc * dc));
+    f_err = exec::CornerBound<1>(
+        f, {c}, [&](const D1& x) { return std::exp(-(density * x[0] * density * x[0])); }, 0.0,
+        exec::kApprox);
   } else {
     return;
   }
-  f = std::clamp(f, 0.0f, 1.0f);
+  Val factor{std::clamp(f, 0.0f, 1.0f), why, 0.0f, c.dev};
+  factor.err = exec::CornerBound<1>(factor.v, {Val{f, why, f_err, 0}}, Clamp01, 0.0);
+  // Mesa leaves a program with ARB_draw_buffers unfogged (deviations.h).
+  if (program.HasOption(OptionId::DrawBuffers)) factor.dev |= kDevFogWithDrawBuffers;
+  if (std::isnan(f)) factor.dev |= kDevNanClamp;
   for (auto& [key, out] : *outputs) {
     if (out.binding.result != ResultReg::FragColor) continue;
+    if (out.written & 0x8) {
+      // "The final clamped color": alpha is clamped too, and not blended.
+      Val alpha = out.value[3];
+      out.value[3].v = std::clamp(alpha.v, 0.0f, 1.0f);
+      out.value[3].err = exec::CornerBound<1>(out.value[3].v, {alpha}, Clamp01, 0.0);
+      if (std::isnan(alpha.v)) out.value[3].dev |= kDevNanClamp;
+      out.value[3].dev |= factor.dev & kDevFogWithDrawBuffers;
+    }
     for (size_t i = 0; i < 3; ++i) {
       if (!(out.written & (1u << i))) continue;
-      float cr = std::clamp(out.value[i].v, 0.0f, 1.0f);
-      float cf = std::clamp(state.fog_color[i], 0.0f, 1.0f);
-      out.value[i] = From(f * cr + (1.0f - f) * cf, {out.value[i], Val{f, why}});
+      Val colour = out.value[i];
+      float cr = std::clamp(colour.v, 0.0f, 1.0f);
+      double cf = std::clamp(state.fog_color[i], 0.0f, 1.0f);
+      float v = factor.v * cr + (1.0f - factor.v) * static_cast<float>(cf);
+      // Drivers blend as cf + f * (cr - cf): the rounding of both forms.
+      double f64 = factor.v;
+      double c64 = cr;
+      double magnitude = f64 * c64 + (1.0 - f64) * cf + cf + f64 * std::fabs(c64 - cf);
+      float err = exec::CornerBound<2>(
+          v, {factor, colour},
+          [&](const D2& x) { return x[0] * Clamp01({x[1]}) + (1.0 - x[0]) * cf; }, magnitude, 0.0,
+          0.0, /*reformulated=*/true);
+      out.value[i] = From(v, {colour, factor}, err);
+      if (std::isnan(colour.v)) out.value[i].dev |= kDevNanClamp;
     }
   }
 }
 
 VectorResult Collect(const Program& program, const Outputs& outputs, const Reasons& reasons,
-                     bool killed, int kill_why) {
+                     bool killed, int kill_why, bool kill_unstable, uint32_t kill_dev) {
   VectorResult result;
   result.killed = killed;
+  result.kill_unstable = kill_unstable;
+  result.kill_deviations = kill_dev;
   if (kill_why != kDefined) {
     result.kill_undefined = "whether KIL discards the fragment depends on " + reasons.Get(kill_why);
   }
@@ -441,6 +561,8 @@ VectorResult Collect(const Program& program, const Outputs& outputs, const Reaso
       int why = out.value[i].why;
       if (why == kDefined && kill_why != kDefined) why = kill_why;
       if (why >= 0) reg.undefined[i] = reasons.Get(why);
+      reg.tolerance[i] = kill_unstable ? exec::kUnstable : out.value[i].err;
+      reg.deviations[i] = out.value[i].dev | kill_dev;
     }
     result.outputs.push_back(std::move(reg));
   }
@@ -463,7 +585,8 @@ VectorResult RunOne(const Program& program, const ExecInputs& inputs, const Inpu
     AddInvariantPosition(inputs, in.vertex, &run.outputs());
   }
   if (!vp) ApplyFog(program, inputs.state, fragment.fogcoord, reasons, &run.outputs());
-  return Collect(program, run.outputs(), *reasons, run.killed(), run.kill_why());
+  return Collect(program, run.outputs(), *reasons, run.killed(), run.kill_why(),
+                 run.kill_unstable(), run.kill_dev());
 }
 
 // A vertex output as a fragment input; components the vertex program did not write are
@@ -486,7 +609,12 @@ Reg Varying(const Outputs& outputs, ResultReg reg, int32_t index, bool secondary
 // GL 2.0 section 2.14.6 (ARBvp 2.14.4.4 "color clamping"): vertex colours are clamped to
 // [0, 1] before rasterization.
 Reg ClampColor(Reg r) {
-  for (Val& v : r) v.v = std::clamp(v.v, 0.0f, 1.0f);
+  for (Val& v : r) {
+    Val in = v;
+    v.v = std::clamp(v.v, 0.0f, 1.0f);
+    v.err = exec::CornerBound<1>(v.v, {in}, Clamp01, 0.0);
+    if (std::isnan(in.v)) v.dev |= kDevNanClamp;
+  }
   return r;
 }
 

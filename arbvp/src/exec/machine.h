@@ -9,30 +9,50 @@
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "arbiter/arbvp/deviations.h"
 #include "arbiter/arbvp/exec.h"
 #include "arbiter/arbvp/ir.h"
 
 namespace arbiter::arbvp::exec {
+
+// A float widened for the tolerance model's double arithmetic.
+inline double Wide(float x) { return static_cast<double>(x); }
 
 inline constexpr int kDefined = -1;
 // A register component never written (temporaries, address registers): the instruction
 // that reads it names the reason.
 inline constexpr int kUnwritten = -2;
 
+// `err` bounds |v - (what a conforming implementation computes)| under the tolerance model
+// (tolerance.h); +inf when the value is within rounding of a discontinuity. `dev` holds the
+// known Mesa deviations (deviations.h) the value depends on.
 struct Val {
   float v = 0.0f;
   int why = kDefined;
+  float err = 0.0f;
+  uint32_t dev = 0;
 };
 using Reg = std::array<Val, 4>;
 
-inline Reg DefinedReg(const Vec4& v) { return {Val{v[0]}, Val{v[1]}, Val{v[2]}, Val{v[3]}}; }
+// An input value: exact, except that a denormal may reach the program flushed to zero.
+inline Val InputVal(float v, int why = kDefined) {
+  bool denormal = v != 0.0f && std::fabs(v) < std::numeric_limits<float>::min();
+  return {v, why, denormal ? std::numeric_limits<float>::min() : 0.0f,
+          std::isfinite(v) ? 0u : kDevNonFiniteLlvmpipe};
+}
+inline Reg DefinedReg(const Vec4& v) {
+  return {InputVal(v[0]), InputVal(v[1]), InputVal(v[2]), InputVal(v[3])};
+}
 inline Reg UndefinedReg(const Vec4& v, int why) {
-  return {Val{v[0], why}, Val{v[1], why}, Val{v[2], why}, Val{v[3], why}};
+  return {InputVal(v[0], why), InputVal(v[1], why), InputVal(v[2], why), InputVal(v[3], why)};
 }
 
 // The reasons of one run (one input vector, or a vertex + fragment pair).
@@ -53,12 +73,15 @@ class Reasons {
   std::map<std::string, int> index_;
 };
 
-// A result component computed from `deps`: undefined with the first undefined one's reason.
-inline Val From(float v, std::initializer_list<Val> deps) {
+// A result component computed from `deps`: undefined with the first undefined one's reason,
+// depending on all their deviations. The error bound is the caller's (tolerance.h).
+inline Val From(float v, std::initializer_list<Val> deps, float err = 0.0f) {
+  Val r{v, kDefined, err, std::isfinite(v) ? 0u : kDevNonFiniteLlvmpipe};
   for (const Val& d : deps) {
-    if (d.why != kDefined) return {v, d.why};
+    if (r.why == kDefined) r.why = d.why;
+    r.dev |= d.dev;
   }
-  return {v, kDefined};
+  return r;
 }
 
 // Everything one instruction reads besides its operands.
@@ -75,6 +98,10 @@ struct OpContext {
   bool killed = false;
   bool killed_defined = false;
   int kill_why = kDefined;
+  // Whether the KIL outcome is within rounding of its threshold, and the deviations it
+  // depends on.
+  bool kill_unstable = false;
+  uint32_t kill_dev = 0;
 
   // A new reason: `what` followed by the instruction's location.
   int Undefined(std::string_view what) const { return reasons->Add(std::string(what) + where); }

@@ -9,30 +9,6 @@
 namespace arbiter::arbvp::exec {
 namespace {
 
-TexDim DimOf(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-    case TexTarget::Shadow1D:
-      return TexDim::Tex1D;
-    case TexTarget::Tex2D:
-    case TexTarget::Shadow2D:
-      return TexDim::Tex2D;
-    case TexTarget::Tex3D:
-      return TexDim::Tex3D;
-    case TexTarget::Cube:
-      return TexDim::Cube;
-    case TexTarget::Rect:
-    case TexTarget::ShadowRect:
-      return TexDim::Rect;
-  }
-  return TexDim::Tex2D;
-}
-
-bool IsShadow(TexTarget target) {
-  return target == TexTarget::Shadow1D || target == TexTarget::Shadow2D ||
-         target == TexTarget::ShadowRect;
-}
-
 bool Complete(const Texture& tex) {
   if (tex.width < 1 || tex.height < 1 || tex.depth < 1) return false;
   if (tex.dim == TexDim::Cube && (tex.depth != 6 || tex.width != tex.height)) return false;
@@ -250,15 +226,47 @@ Vec4 DepthToRgba(float r, DepthMode mode) {
 
 }  // namespace
 
+}  // namespace arbiter::arbvp::exec
+
+namespace arbiter::arbvp {
+
+TexDim TargetDim(TexTarget target) {
+  switch (target) {
+    case TexTarget::Tex1D:
+    case TexTarget::Shadow1D:
+      return TexDim::Tex1D;
+    case TexTarget::Tex2D:
+    case TexTarget::Shadow2D:
+      return TexDim::Tex2D;
+    case TexTarget::Tex3D:
+      return TexDim::Tex3D;
+    case TexTarget::Cube:
+      return TexDim::Cube;
+    case TexTarget::Rect:
+    case TexTarget::ShadowRect:
+      return TexDim::Rect;
+  }
+  return TexDim::Tex2D;
+}
+
+bool IsShadowTarget(TexTarget target) {
+  return target == TexTarget::Shadow1D || target == TexTarget::Shadow2D ||
+         target == TexTarget::ShadowRect;
+}
+
+}  // namespace arbiter::arbvp
+
+namespace arbiter::arbvp::exec {
+
 Sample SampleTexture(const std::map<int, Texture>& textures, int unit, TexTarget target, float s,
                      float t, float r, bool shadow_option) {
   Sample out;
   auto it = textures.find(unit);
   if (it == textures.end()) return out;
   const Texture& tex = it->second;
-  if (tex.dim != DimOf(target) || !Complete(tex)) return out;
+  if (tex.dim != TargetDim(target) || !Complete(tex)) return out;
 
-  bool shadow = IsShadow(target);
+  bool shadow = IsShadowTarget(target);
   // ARB_fragment_program_shadow: without the option a 1D/2D/RECT sample behaves as if the
   // compare mode were NONE; with it, a target inconsistent with the texture is undefined.
   bool compare = shadow;
@@ -301,6 +309,12 @@ Sample SampleTexture(const std::map<int, Texture>& textures, int unit, TexTarget
       }
       image.layer_base = face * tex.width * tex.height;
       dims = 2;
+      if (tex.filter == TexFilter::Linear) {
+        float u = cs * static_cast<float>(tex.width);
+        float v = ct * static_cast<float>(tex.height);
+        out.cube_edge = !(u >= 0.5f && u <= static_cast<float>(tex.width) - 0.5f && v >= 0.5f &&
+                          v <= static_cast<float>(tex.height) - 0.5f);
+      }
       break;
     }
   }
@@ -320,6 +334,17 @@ Sample SampleTexture(const std::map<int, Texture>& textures, int unit, TexTarget
   float u = WrapToTexel(axes[0], cs);
   float v = dims > 1 ? WrapToTexel(axes[1], ct) : 0.0f;
   float w = dims > 2 ? WrapToTexel(axes[2], cr) : 0.0f;
+  if (tex.filter == TexFilter::Linear && tex.wrap == TexWrap::MirroredRepeat && !rect) {
+    const std::array<float, 3> coords{cs, ct, cr};
+    const std::array<float, 3> texels{u, v, w};
+    for (int i = 0; i < dims; ++i) {
+      bool mirrored = std::fmod(std::floor(coords[static_cast<size_t>(i)]), 2.0f) != 0.0f;
+      float shifted = texels[static_cast<size_t>(i)] - 0.5f;
+      float alpha = shifted - std::floor(shifted);
+      out.mirror_centre =
+          out.mirror_centre || (mirrored && (alpha < 0x1p-8f || alpha > 1.0f - 0x1p-8f));
+    }
+  }
 
   TexelReader reader;
   reader.image = image;

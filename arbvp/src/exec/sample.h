@@ -12,7 +12,10 @@ namespace arbiter::arbvp::exec {
 
 struct Sample {
   Vec4 value{0.0f, 0.0f, 0.0f, 1.0f};
-  std::string undefined;  // why the specs leave the value undefined; empty when defined
+  std::string undefined;   // why the specs leave the value undefined; empty when defined
+  bool cube_edge = false;  // a linear cube lookup whose footprint crosses a face edge
+  // A linear MIRRORED_REPEAT lookup at a texel centre of a mirrored period.
+  bool mirror_centre = false;
 };
 
 // Samples unit `unit` with `target` at (s, t, r) (TXP has already divided by q). The model

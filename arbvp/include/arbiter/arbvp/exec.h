@@ -56,7 +56,9 @@ inline constexpr int kMaxLights = 8;
 inline constexpr int kMaxClipPlanes = 6;
 inline constexpr int kMaxProgramMatrices = 8;  // state.matrix.program[n]
 inline constexpr int kMaxGenericAttribs = 16;
-inline constexpr int kMaxProgramParams = 96;  // env and local indices accepted by the model
+// env and local indices accepted by the model: Mesa's MAX_PROGRAM_ENV_PARAMETERS (the specs'
+// minimum is 96 for vertex programs, 24 for fragment programs).
+inline constexpr int kMaxProgramParams = 256;
 
 struct GlState {
   // Matrices as GL holds them (glm is column-major like GL). ARB reads their rows.
@@ -94,6 +96,10 @@ Vec4 ReadStateBinding(const GlState& state, const Binding& binding);
 // Textures.
 
 enum class TexDim : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect };
+// The dimension of texture a sampling target reads (SHADOW2D reads a 2D texture), and whether
+// the target compares depths.
+TexDim TargetDim(TexTarget target);
+bool IsShadowTarget(TexTarget target);
 enum class TexFilter : uint8_t { Nearest, Linear };
 enum class TexWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
 // GL_TEXTURE_COMPARE_FUNC for depth textures in GL_COMPARE_R_TO_TEXTURE mode.
@@ -197,6 +203,11 @@ struct OutputRegister {
   // instruction, e.g. "LG2 of a non-positive value at 4:1" (interpreter only; other
   // engines leave these empty).
   std::array<std::string, 4> undefined;
+  // Interpreter only, the tolerance model (docs/verify.md): per component, how far a
+  // conforming engine's value may be from `value` (+inf: within rounding of a discontinuity,
+  // not comparable), and the known Mesa deviations it depends on (deviations.h).
+  std::array<float, 4> tolerance{};
+  std::array<uint32_t, 4> deviations{};
 };
 
 struct VectorResult {
@@ -207,6 +218,10 @@ struct VectorResult {
   // Interpreter only: non-empty when whether a KIL discarded the fragment depends on an
   // undefined value (then every reported output component is tagged with it too).
   std::string kill_undefined;
+  // Interpreter only: whether KIL discards is within rounding of its threshold (then every
+  // output tolerance is +inf), and the deviations that decision depends on.
+  bool kill_unstable = false;
+  uint32_t kill_deviations = 0;
 };
 
 // The stable order of result registers (position, colours, fog, point size, texcoords by
