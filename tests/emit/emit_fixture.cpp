@@ -74,6 +74,7 @@ std::vector<std::string> Statements(const std::string& glsl) {
     line = line.substr(start);
     if (line.rfind("//", 0) == 0 || line == "}") continue;
     if (line.rfind("vec4 ", 0) == 0 || line.rfind("int ", 0) == 0) continue;  // locals
+    if (line.find("// result.position is never written") != std::string::npos) continue;
     out.push_back(line);
   }
   return out;

@@ -42,6 +42,18 @@ TEST(EmitStatement, LitCallsTheSpecHelper) {
       << t.glsl;
 }
 
+// GLSL requires gl_Position; ARB leaves an unwritten result.position undefined.
+TEST(EmitStatement, UnwrittenPositionGetsAPlaceholder) {
+  Translation t = TranslateText("!!ARBvp1.0\nMOV result.color, vertex.color;\nEND\n");
+  EXPECT_EQ(GlslErrors(ProgramKind::Vertex, t.glsl), "") << t.glsl;
+  EXPECT_NE(t.glsl.find("  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);  // result.position is never "
+                        "written: undefined in ARB\n"),
+            std::string::npos)
+      << t.glsl;
+  Translation written = TranslateText("!!ARBvp1.0\nMOV result.position, vertex.position;\nEND\n");
+  EXPECT_EQ(written.glsl.find("never written"), std::string::npos) << written.glsl;
+}
+
 TEST(EmitStatement, SwzBuildsSignedComponentsAndConstants) {
   EXPECT_EQ(Vp("TEMP t;\nSWZ t, vertex.position, -x, 0, 1, -w;\n"),
             Lines{"t = vec4(-gl_Vertex.x, 0.0, 1.0, -gl_Vertex.w);"});

@@ -96,14 +96,6 @@ std::string RelativeReaderName(const Context& ctx, int var) {
 std::string RelativeReaderText(const Context& ctx, int var) {
   std::string name = ctx.var_names[static_cast<size_t>(var)];
   int size = static_cast<int>(ctx.program.vars[static_cast<size_t>(var)].bindings.size());
-  if (ctx.Mutated(Mutation::RelativeNoBoundsCheck)) {
-    return fmt::format(
-        "// {0}[A0.x + k]\n"
-        "vec4 {1}(int arb_i) {{\n"
-        "  return {0}[arb_i < 0 ? 0 : (arb_i > {2} ? {2} : arb_i)];\n"
-        "}}\n",
-        name, RelativeReaderName(ctx, var), size - 1);
-  }
   return fmt::format(
       "// {0}[A0.x + k]: a read outside {0}[0..{2}] gives vec4(0.0) (undefined in ARB).\n"
       "vec4 {1}(int arb_i) {{\n"

@@ -295,7 +295,6 @@ enum class SampleKind { Plain, Projective, Bias };
 std::string Sample(Context& ctx, const Instruction& inst, SampleKind kind) {
   if (kind == SampleKind::Projective && ctx.Mutated(Mutation::TxpNoDivide))
     kind = SampleKind::Plain;
-  if (kind == SampleKind::Bias && ctx.Mutated(Mutation::TxbNoBias)) kind = SampleKind::Plain;
   TexTarget target = inst.target;
   ctx.samplers[inst.tex_unit] = target;
   if (target == TexTarget::Rect || target == TexTarget::ShadowRect) ctx.needs_rect = true;

@@ -26,7 +26,7 @@ std::string Indent(const std::string& lines) {
 
 // The fog blend of OPTION ARB_fog_*: ARBfp 3.11.4.5.1 applies GL fog (GL 2.0 section 3.10)
 // to the program's final colour clamped to [0, 1]: C = mix(Cf, clamp(Cr), f) for r, g, b,
-// alpha unchanged, f clamped to [0, 1], c = fragment.fogcoord.x and Cf the fog colour
+// alpha clamped, f clamped to [0, 1], c = fragment.fogcoord.x and Cf the fog colour
 // (clamped, as GL clamps it when it is specified). With ARB_draw_buffers every
 // result.color[n] is fogged, as the reference interpreter does.
 std::string FogEpilogue(const Context& ctx) {
@@ -57,8 +57,9 @@ std::string FogEpilogue(const Context& ctx) {
     std::string rgb = ctx.Mutated(Mutation::FogColorUnclamped)
                           ? color + ".rgb"
                           : fmt::format("clamp({}.rgb, 0.0, 1.0)", color);
-    out += fmt::format("{} = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), {}, arb_fog), {}.a);\n",
-                       FragColorName(ctx, n), rgb, color);
+    out += fmt::format(
+        "{} = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), {}, arb_fog), clamp({}.a, 0.0, 1.0));\n",
+        FragColorName(ctx, n), rgb, color);
   }
   return out;
 }
@@ -113,6 +114,11 @@ std::string EmitShader(Context& ctx) {
     locals += "gl_Position = ftransform();  // OPTION ARB_position_invariant\n";
     ctx.outputs["result.position"] =
         RegisterMapping{"result.position", "gl_Position", ProgramKind::Vertex};
+  } else if (ctx.IsVertex() && !ctx.outputs.count("result.position")) {
+    // A GLSL vertex shader must write gl_Position (GLSL 1.10 section 7.1).
+    locals +=
+        "gl_Position = vec4(0.0, 0.0, 0.0, 1.0);  // result.position is never written: "
+        "undefined in ARB\n";
   }
 
   std::string out = "#version 110\n";

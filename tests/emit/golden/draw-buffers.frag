@@ -24,7 +24,7 @@ void main() {
   // OPTION ARB_fog_exp2: f = exp(-(density * c)^2), c = gl_FogFragCoord
   float arb_fog_dc = gl_Fog.density * gl_FogFragCoord;
   float arb_fog = clamp(exp(-(arb_fog_dc * arb_fog_dc)), 0.0, 1.0);
-  gl_FragData[0] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color0.rgb, 0.0, 1.0), arb_fog), arb_color0.a);
-  gl_FragData[1] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color1.rgb, 0.0, 1.0), arb_fog), arb_color1.a);
-  gl_FragData[2] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color2.rgb, 0.0, 1.0), arb_fog), arb_color2.a);
+  gl_FragData[0] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color0.rgb, 0.0, 1.0), arb_fog), clamp(arb_color0.a, 0.0, 1.0));
+  gl_FragData[1] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color1.rgb, 0.0, 1.0), arb_fog), clamp(arb_color1.a, 0.0, 1.0));
+  gl_FragData[2] = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color2.rgb, 0.0, 1.0), arb_fog), clamp(arb_color2.a, 0.0, 1.0));
 }

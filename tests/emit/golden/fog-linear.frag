@@ -14,5 +14,5 @@ void main() {
 
   // OPTION ARB_fog_linear: f = (end - c) / (end - start), c = gl_FogFragCoord
   float arb_fog = clamp((gl_Fog.end - gl_FogFragCoord) / (gl_Fog.end - gl_Fog.start), 0.0, 1.0);
-  gl_FragColor = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color.rgb, 0.0, 1.0), arb_fog), arb_color.a);
+  gl_FragColor = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), clamp(arb_color.rgb, 0.0, 1.0), arb_fog), clamp(arb_color.a, 0.0, 1.0));
 }

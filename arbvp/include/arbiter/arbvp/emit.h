@@ -38,10 +38,8 @@ enum class Mutation : uint8_t {
   LogNoAbs,               // LOG of x instead of |x|
   ExpFraction,            // EXP.y = t - trunc(t) instead of t - floor(t)
   TxpNoDivide,            // TXP samples like TEX (no divide by q)
-  TxbNoBias,              // TXB samples like TEX (bias dropped)
   NegationDropped,        // a negated source operand read without its sign
   WriteMaskIgnored,       // every destination written in full
-  RelativeNoBoundsCheck,  // out-of-range relative reads clamp the index instead of giving 0
   ScsSinCosSwapped,       // SCS = (sin, cos) instead of (cos, sin)
   PowOperandsSwapped,     // POW = pow(b, a)
   FrcTruncate,            // FRC = x - trunc(x) instead of x - floor(x)
