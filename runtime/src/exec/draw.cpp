@@ -62,18 +62,20 @@ void EmitVertex(const ExecGl& gl, const RunPlan& plan, const arbvp::InputVector&
 }  // namespace
 
 void DrawPoints(const ExecGl& gl, const RunPlan& plan, const arbvp::ExecInputs& inputs, int width,
-                int height) {
-  // A position in program.env can only change between glBegin and glEnd pairs.
-  const bool per_point = plan.position_env >= 0;
+                int height, GLint pixel_uniform) {
+  // A position in program.env or a uniform can only change between glBegin and glEnd pairs.
+  const bool per_point = plan.position_env >= 0 || pixel_uniform >= 0;
   if (!per_point) gl.Begin(GL_POINTS);
   for (size_t i = 0; i < inputs.vectors.size(); ++i) {
     const arbvp::InputVector& v = inputs.vectors[i];
     const arbvp::Vec4 clip = PixelClipPosition(i, width, height, v.fragment.depth, inputs.state);
-    if (per_point) {
+    if (pixel_uniform >= 0) {
+      gl.Uniform4fv(pixel_uniform, 1, clip.data());
+    } else if (per_point) {
       gl.ProgramEnvParameter4fvARB(GL_VERTEX_PROGRAM_ARB, static_cast<GLuint>(plan.position_env),
                                    clip.data());
-      gl.Begin(GL_POINTS);
     }
+    if (per_point) gl.Begin(GL_POINTS);
     EmitVertex(gl, plan, v, clip);
     if (per_point) gl.End();
   }

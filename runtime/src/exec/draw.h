@@ -17,9 +17,10 @@ arbvp::Vec4 PixelClipPosition(size_t index, int width, int height, float depth,
 
 // Sends every vector of `inputs` as one point: the fragment inputs in the generic attributes
 // the pass-through vertex program reads (fragment programs alone), or the vertex inputs plus
-// the pixel position in plan.position_attrib or plan.position_env (vertex programs).
+// the pixel position in plan.position_attrib or plan.position_env (vertex programs), or in
+// the uniform `pixel_uniform` of the current GLSL program when it is not -1.
 void DrawPoints(const ExecGl& gl, const RunPlan& plan, const arbvp::ExecInputs& inputs, int width,
-                int height);
+                int height, GLint pixel_uniform = -1);
 
 // The pixels read back become one VectorResult per vector: a fragment whose alive flag is
 // not 1 was killed (`alive` empty: no flag); `values[s]` holds plan.outputs[s]'s pixels.

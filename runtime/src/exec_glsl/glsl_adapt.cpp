@@ -125,7 +125,14 @@ const Renames kVertexOutputs = {
 constexpr const char* kVertexGlobals =
     "vec4 arbiter_position;\nfloat arbiter_pointsize;\nvec4 arbiter_front_color;\n"
     "vec4 arbiter_back_color;\nvec4 arbiter_front_secondary;\nvec4 arbiter_back_secondary;\n"
-    "float arbiter_fogcoord;\nvec4 arbiter_texcoord[8];\nattribute vec4 arbiter_pixel;\n";
+    "float arbiter_fogcoord;\nvec4 arbiter_texcoord[8];\n";
+
+// The point's clip position: an attribute, or a uniform set per point when the vertex
+// program reads all sixteen generic attributes.
+std::string PixelDeclaration(const RunPlan& plan) {
+  return plan.position_attrib >= 0 ? "attribute vec4 arbiter_pixel;\n"
+                                   : "uniform vec4 arbiter_pixel;\n";
+}
 
 // GLSL 1.10 globals have no initial value; ARB results start at 0 in the ARB engine's
 // rewrite, so unwritten components read the same in both.
@@ -159,7 +166,10 @@ bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, int max_attach
       reads += fmt::format("  gl_FragData[{0}] = arbiter_out{0};\n", k);
       pass.attachments.push_back(static_cast<int>(s));
     }
-    if (!Adapt(base, kVertexOutputs, kVertexGlobals + varyings, &pass.vertex, error)) return false;
+    if (!Adapt(base, kVertexOutputs, kVertexGlobals + PixelDeclaration(plan) + varyings,
+               &pass.vertex, error)) {
+      return false;
+    }
     pass.vertex += fmt::format(
         "\nvoid main() {{\n{}  arbiter_main();\n  gl_Position = arbiter_pixel;\n"
         "  gl_PointSize = 1.0;\n{}}}\n",
@@ -207,7 +217,7 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, int max_atta
     const Renames renames = {{"gl_Position", "arbiter_position"},
                              {"gl_PointSize", "arbiter_pointsize"}};
     const std::string globals =
-        "vec4 arbiter_position;\nfloat arbiter_pointsize;\nattribute vec4 arbiter_pixel;\n";
+        "vec4 arbiter_position;\nfloat arbiter_pointsize;\n" + PixelDeclaration(plan);
     if (!Adapt(t.vertex, renames, globals, &vertex, error)) return false;
     vertex +=
         "\nvoid main() {\n  arbiter_position = vec4(0.0);\n  arbiter_pointsize = 0.0;\n"

@@ -108,7 +108,9 @@ GLuint LinkGlslPass(const ExecGl& gl, const GlslPass& pass, const arbvp::Binding
         gl.BindAttribLocation(program, static_cast<GLuint>(a.location), a.name.c_str());
       }
     }
-    gl.BindAttribLocation(program, static_cast<GLuint>(plan.position_attrib), kPixelAttribute);
+    if (plan.position_attrib >= 0) {
+      gl.BindAttribLocation(program, static_cast<GLuint>(plan.position_attrib), kPixelAttribute);
+    }
   }
   gl.LinkProgram(program);
   // The program keeps the shaders alive while they are attached.

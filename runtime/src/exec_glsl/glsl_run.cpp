@@ -69,7 +69,11 @@ struct Run {
               Check(gl, "setting the uniforms", error);
     if (ok) {
       framebuffer->Begin(static_cast<int>(pass.attachments.size()));
-      DrawPoints(gl, plan, inputs, width, height);
+      // Without a spare generic attribute the position is a uniform, set point by point.
+      const GLint pixel = plan.mode != RunMode::Fragment && plan.position_attrib < 0
+                              ? gl.GetUniformLocation(program, kPixelAttribute)
+                              : -1;
+      DrawPoints(gl, plan, inputs, width, height, pixel);
       ok = Check(gl, "drawing the points", error);
     }
     for (size_t a = 0; ok && a < pass.attachments.size(); ++a) {
@@ -93,12 +97,6 @@ bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const Arb
   results->clear();
   RunPlan plan;
   if (!PlanRun(programs, limits, &plan, error)) return false;
-  if (plan.mode != RunMode::Fragment && plan.position_attrib < 0) {
-    *error =
-        "the vertex program reads every generic attribute: none is left for the point's "
-        "position (the GLSL engine has no program.env fallback)";
-    return false;
-  }
   const CheckedTranslation translation =
       TranslateChecked(programs.vertex, programs.fragment, emit, nullptr, nullptr);
   if (!translation.ok) {
