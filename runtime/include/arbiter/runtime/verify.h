@@ -1,0 +1,84 @@
+// Differential verification (architecture.md, Verification policy): a program runs on the
+// reference interpreter (ref), on Mesa as ARB assembly (mesa-arb) and on Mesa as its GLSL
+// translation (mesa-glsl), over generated edge and random inputs; every written output
+// component is compared with the interpreter's under the tolerance model (docs/verify.md).
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/exec.h"
+#include "arbiter/arbvp/generate.h"
+#include "arbiter/arbvp/ir.h"
+#include "arbiter/compiler/source.h"
+#include "arbiter/runtime/exec.h"
+#include "arbiter/runtime/worker.h"
+
+namespace arbiter::runtime {
+
+inline constexpr const char* kEngineRef = "ref";
+inline constexpr const char* kEngineMesaArb = "mesa-arb";
+inline constexpr const char* kEngineMesaGlsl = "mesa-glsl";
+
+struct VerifyOptions {
+  ExecOptions exec;
+  // One worker runs every program's Mesa engines; timeout_ms is per program.
+  WorkerLimits limits;
+  arbvp::GenerateOptions generate;
+  bool mesa_arb = true;
+  bool mesa_glsl = true;
+  arbvp::EmitOptions emit;  // the translation mesa-glsl runs (a test-only mutation included)
+};
+
+// One program, or a vertex + fragment pair, checked without errors.
+struct VerifySubject {
+  std::string name;  // the file(s), for the report
+  const arbvp::Program* vertex = nullptr;
+  const arbvp::Program* fragment = nullptr;
+  const compiler::SourceFile* vertex_source = nullptr;
+  const compiler::SourceFile* fragment_source = nullptr;
+};
+
+// One output component (or a kill) on which a Mesa engine and the interpreter disagree.
+struct Disagreement {
+  std::string batch;  // "edge", "random 1", ...
+  size_t vector = 0;
+  std::string reg;     // "result.color"; empty for a kill
+  int component = -1;  // 0..3; -1 for a kill or a missing register
+  std::string what;    // "killed by ref only", "not written by mesa-glsl"; empty for a value
+  float tolerance = 0.0f;
+  // The value of each engine that ran ("ref", "mesa-arb", "mesa-glsl"), and those that
+  // disagree with ref.
+  std::map<std::string, float> values;
+  std::vector<std::string> engines;
+  std::vector<std::string> inputs;  // DescribeReadInputs of the vector
+};
+
+struct Verdict {
+  std::string name;
+  std::string error;  // an engine could not run the program (then nothing was compared)
+  size_t vectors = 0;
+  size_t compared = 0;                       // components compared, per Mesa engine
+  std::map<std::string, size_t> undefined;   // reason -> components not compared
+  size_t unstable = 0;                       // within rounding of a discontinuity
+  std::map<std::string, size_t> deviations;  // known Mesa deviation -> components
+  std::vector<Disagreement> disagreements;
+};
+
+// Verifies every subject; Mesa engines run in one worker process (a subject that crashes
+// or hangs it is retried alone so that the others still get a verdict).
+std::vector<Verdict> Verify(const std::vector<VerifySubject>& subjects,
+                            const VerifyOptions& options);
+
+// Compares one Mesa engine's results with the interpreter's (`ref`, with its tolerances
+// and tags) on one batch, adding to `verdict`. `applicable` are the deviations
+// (arbvp::ApplicableDeviations) of the engine and driver. Disagreements get the engine's
+// name in `engines` and its value in `values`.
+void CompareWithReference(const std::vector<arbvp::VectorResult>& ref,
+                          const std::vector<arbvp::VectorResult>& engine, const std::string& name,
+                          uint32_t applicable, const std::string& batch, Verdict* verdict);
+
+}  // namespace arbiter::runtime
