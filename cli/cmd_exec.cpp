@@ -13,6 +13,7 @@
 #include "arbiter/runtime/mesa.h"
 #include "arbiter/runtime/worker.h"
 #include "cli.h"
+#include "load_arb.h"
 
 namespace arbiter::cli {
 namespace {
@@ -30,55 +31,18 @@ struct ExecCommandOptions {
   int memory_mib = 8192;
 };
 
-struct LoadedProgram {
-  std::unique_ptr<compiler::SourceFile> source;
-  arbvp::CheckResult checked;
-};
-
 struct EngineRun {
   std::string name;  // "ref", "mesa"
   std::vector<arbvp::VectorResult> results;
 };
 
-// Reads and checks every file; prints diagnostics. Returns the worst outcome.
-Exit LoadPrograms(const ExecCommandOptions& options, std::vector<LoadedProgram>* programs) {
-  std::optional<arbvp::ProgramKind> stage;
-  if (!ResolveStage(options.common, &stage)) return Exit::Usage;
-  std::vector<compiler::FileReport> reports;
-  Exit exit = Exit::Ok;
-  for (const Input& input : ExpandInputs(options.common.files)) {
-    compiler::FileReport report;
-    report.path = input.display_path;
-    LoadedProgram p;
-    p.source = ReadInput(input, &report);
-    if (!p.source) {
-      exit = Worse(exit, Exit::Environment);
-    } else {
-      compiler::DiagnosticSink sink(options.common.error_limit);
-      arbvp::CheckOptions check;
-      check.expected_kind = stage;
-      p.checked = arbvp::CheckProgram(*p.source, check, &sink);
-      if (!p.checked.ok || !p.checked.program) exit = Worse(exit, Exit::Rejected);
-      report.diagnostics = std::move(sink.diagnostics());
-      report.dropped_errors = sink.dropped();
-      programs->push_back(std::move(p));
-    }
-    if (!report.diagnostics.empty()) reports.push_back(std::move(report));
-  }
-  // Diagnostics go to stderr as text in every format: stdout holds the results alone.
-  CommonOptions text = options.common;
-  text.format = "text";
-  if (!reports.empty()) PrintReports(reports, text);
-  return exit;
-}
-
 // The programs to run: one alone, or a vertex program and a fragment program as a pair.
-bool PickPrograms(const std::vector<LoadedProgram>& loaded, const LoadedProgram** vertex,
-                  const LoadedProgram** fragment) {
+bool PickPrograms(const std::vector<LoadedArb>& loaded, const LoadedArb** vertex,
+                  const LoadedArb** fragment) {
   *vertex = nullptr;
   *fragment = nullptr;
-  for (const LoadedProgram& p : loaded) {
-    const LoadedProgram** slot =
+  for (const LoadedArb& p : loaded) {
+    const LoadedArb** slot =
         p.checked.program->kind == arbvp::ProgramKind::Vertex ? vertex : fragment;
     if (*slot) return false;
     *slot = &p;
@@ -223,11 +187,11 @@ int RunExec(const ExecCommandOptions& options) {
                options.driver);
     return static_cast<int>(Exit::Usage);
   }
-  std::vector<LoadedProgram> loaded;
-  Exit exit = LoadPrograms(options, &loaded);
+  std::vector<LoadedArb> loaded;
+  Exit exit = LoadArbPrograms(options.common, &loaded);
   if (exit != Exit::Ok) return static_cast<int>(exit);
-  const LoadedProgram* vertex = nullptr;
-  const LoadedProgram* fragment = nullptr;
+  const LoadedArb* vertex = nullptr;
+  const LoadedArb* fragment = nullptr;
   if (!PickPrograms(loaded, &vertex, &fragment)) {
     fmt::print(stderr,
                "arbiter: error: exec runs one program, or one vertex program and one fragment "
@@ -244,7 +208,7 @@ int RunExec(const ExecCommandOptions& options) {
       run.results = arbvp::InterpretPair(*vertex->checked.program, *fragment->checked.program,
                                          inputs, vertex->source.get(), fragment->source.get());
     } else {
-      const LoadedProgram* p = vertex ? vertex : fragment;
+      const LoadedArb* p = vertex ? vertex : fragment;
       run.results = arbvp::Interpret(*p->checked.program, inputs, p->source.get());
     }
     runs.push_back(std::move(run));
@@ -273,7 +237,7 @@ int RunExec(const ExecCommandOptions& options) {
   std::vector<arbvp::Difference> diffs;
   if (runs.size() > 1) diffs = arbvp::CompareResults(runs[0].results, runs[1].results);
   std::vector<std::string> files;
-  for (const LoadedProgram& p : loaded) files.push_back(p.source->path());
+  for (const LoadedArb& p : loaded) files.push_back(p.source->path());
   if (options.common.format == "json") {
     PrintJson(runs, diffs, files);
   } else {

@@ -12,6 +12,7 @@
 #include "arbiter/arbvp/emit.h"
 #include "arbiter/runtime/translate.h"
 #include "cli.h"
+#include "load_arb.h"
 
 namespace arbiter::cli {
 namespace {
@@ -27,53 +28,12 @@ struct TranslateCommandOptions {
   std::string mutation = "none";  // test-only: --mutation (hidden)
 };
 
-struct Loaded {
-  Input input;
-  std::unique_ptr<compiler::SourceFile> source;
-  arbvp::CheckResult checked;
-};
-
 // One unit of output: a program alone, or a pair.
 struct Job {
-  const Loaded* vertex = nullptr;
-  const Loaded* fragment = nullptr;
+  const LoadedArb* vertex = nullptr;
+  const LoadedArb* fragment = nullptr;
   std::string stem;  // output name without extension, for directory outputs
 };
-
-Exit Load(const TranslateCommandOptions& options, std::vector<Loaded>* loaded) {
-  std::optional<arbvp::ProgramKind> stage;
-  if (!ResolveStage(options.common, &stage)) return Exit::Usage;
-  std::optional<compiler::LimitProfile> profile;
-  if (!ResolveLimits(options.common, &profile)) return Exit::Usage;
-  std::vector<compiler::FileReport> reports;
-  Exit exit = Exit::Ok;
-  for (const Input& input : ExpandInputs(options.common.files)) {
-    compiler::FileReport report;
-    report.path = input.display_path;
-    Loaded l{input, ReadInput(input, &report), {}};
-    if (!l.source) {
-      exit = Worse(exit, Exit::Environment);
-    } else {
-      compiler::DiagnosticSink sink(options.common.error_limit);
-      arbvp::CheckOptions check;
-      check.expected_kind = stage;
-      check.profile = profile ? &*profile : nullptr;
-      l.checked = arbvp::CheckProgram(*l.source, check, &sink);
-      if (options.common.werror) sink.PromoteWarnings();
-      if (!l.checked.ok || !l.checked.program || sink.error_count() > 0) {
-        exit = Worse(exit, Exit::Rejected);
-      }
-      report.diagnostics = std::move(sink.diagnostics());
-      report.dropped_errors = sink.dropped();
-      loaded->push_back(std::move(l));
-    }
-    if (!report.diagnostics.empty()) reports.push_back(std::move(report));
-  }
-  CommonOptions text = options.common;
-  text.format = "text";  // stdout may hold GLSL: diagnostics go to stderr
-  if (!reports.empty()) PrintReports(reports, text);
-  return exit;
-}
 
 std::string Stem(const Input& input) {
   if (input.path == "-") return "stdin";
@@ -171,15 +131,15 @@ int RunTranslate(const TranslateCommandOptions& options) {
     fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
     return static_cast<int>(Exit::Usage);
   }
-  std::vector<Loaded> loaded;
-  Exit exit = Load(options, &loaded);
+  std::vector<LoadedArb> loaded;
+  Exit exit = LoadArbPrograms(options.common, &loaded);
   if (exit != Exit::Ok) return static_cast<int>(exit);
 
   std::vector<Job> jobs;
   if (options.pair) {
     Job job;
     int vertices = 0;
-    for (const Loaded& l : loaded) {
+    for (const LoadedArb& l : loaded) {
       bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
       vertices += vp ? 1 : 0;
       (vp ? job.vertex : job.fragment) = &l;
@@ -192,7 +152,7 @@ int RunTranslate(const TranslateCommandOptions& options) {
     job.stem = Stem(job.vertex->input);
     jobs.push_back(job);
   } else {
-    for (const Loaded& l : loaded) {
+    for (const LoadedArb& l : loaded) {
       Job job;
       (l.checked.program->kind == arbvp::ProgramKind::Vertex ? job.vertex : job.fragment) = &l;
       job.stem = Stem(l.input);

@@ -16,6 +16,8 @@ std::function<int()> AddLinkCommand(CLI::App* app);
 std::function<int()> AddExecCommand(CLI::App* app);
 // cmd_translate.cpp: adds the `translate` subcommand.
 std::function<int()> AddTranslateCommand(CLI::App* app);
+// cmd_verify.cpp: adds the `verify` subcommand.
+std::function<int()> AddVerifyCommand(CLI::App* app);
 }  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
@@ -38,6 +40,7 @@ int main(int argc, char** argv) {
   std::function<int()> run_link = arbiter::cli::AddLinkCommand(&app);
   std::function<int()> run_translate = arbiter::cli::AddTranslateCommand(&app);
   std::function<int()> run_exec = arbiter::cli::AddExecCommand(&app);
+  std::function<int()> run_verify = arbiter::cli::AddVerifyCommand(&app);
 
   try {
     // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
@@ -56,5 +59,6 @@ int main(int argc, char** argv) {
   if (app.get_subcommand("link")->parsed()) return run_link();
   if (app.get_subcommand("translate")->parsed()) return run_translate();
   if (app.get_subcommand("exec")->parsed()) return run_exec();
+  if (app.get_subcommand("verify")->parsed()) return run_verify();
   return static_cast<int>(Exit::Usage);
 }

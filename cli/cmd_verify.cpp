@@ -1,0 +1,281 @@
+// arbiter verify: run each program on the reference interpreter, on Mesa as ARB and on Mesa
+// as its GLSL translation over generated inputs, and report every disagreement.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "arbiter/arbvp/deviations.h"
+#include "arbiter/arbvp/exec_io.h"
+#include "arbiter/runtime/mesa.h"
+#include "arbiter/runtime/verify.h"
+#include "cli.h"
+#include "load_arb.h"
+
+namespace arbiter::cli {
+namespace {
+
+struct VerifyCommandOptions {
+  CommonOptions common;
+  std::vector<std::string> engines{runtime::kEngineRef, runtime::kEngineMesaArb,
+                                   runtime::kEngineMesaGlsl};
+  int vectors = 64;
+  uint64_t seed = 1;
+  bool pair = false;
+  int max_reports = 10;
+  std::string backend = "osmesa";
+  std::string driver = "softpipe";
+  int timeout_ms = 60000;
+  int memory_mib = 8192;
+  std::string mutation = "none";  // test-only (hidden)
+};
+
+std::string Component(const runtime::Disagreement& d) {
+  if (d.component < 0) return d.reg;
+  return fmt::format("{}.{}", d.reg, "xyzw"[d.component]);
+}
+
+std::string Values(const runtime::Disagreement& d) {
+  std::string out;
+  for (const char* engine :
+       {runtime::kEngineRef, runtime::kEngineMesaArb, runtime::kEngineMesaGlsl}) {
+    auto it = d.values.find(engine);
+    if (it == d.values.end()) continue;
+    if (!out.empty()) out += ", ";
+    out += fmt::format("{} {}", engine, arbvp::FormatFloat(it->second));
+    if (std::string_view(engine) == runtime::kEngineRef && d.component >= 0) {
+      out += fmt::format(" (tolerance {})", arbvp::FormatFloat(d.tolerance));
+    }
+  }
+  return out;
+}
+
+std::string Summary(const runtime::Verdict& v) {
+  size_t undefined = 0;
+  for (const auto& [reason, count] : v.undefined) undefined += count;
+  size_t deviations = 0;
+  for (const auto& [name, count] : v.deviations) deviations += count;
+  return fmt::format(
+      "{} vectors, {} comparisons, not compared: {} undefined, {} unstable, {} known deviations",
+      v.vectors, v.compared, undefined, v.unstable, deviations);
+}
+
+void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyCommandOptions& options,
+               const std::string& setup) {
+  std::string out;
+  size_t agree = 0;
+  size_t disagree = 0;
+  size_t errors = 0;
+  for (const runtime::Verdict& v : verdicts) {
+    if (!v.error.empty()) {
+      ++errors;
+      out += fmt::format("{}: error: {}\n", v.name, v.error);
+    }
+    if (v.disagreements.empty()) {
+      if (v.error.empty()) ++agree;
+      out += fmt::format("{}: agree ({})\n", v.name, Summary(v));
+    } else {
+      ++disagree;
+      out +=
+          fmt::format("{}: {} disagreement(s) ({})\n", v.name, v.disagreements.size(), Summary(v));
+    }
+    size_t shown = 0;
+    for (const runtime::Disagreement& d : v.disagreements) {
+      if (shown++ == static_cast<size_t>(options.max_reports)) {
+        out += fmt::format("  ... and {} more\n", v.disagreements.size() - options.max_reports);
+        break;
+      }
+      std::string engines;
+      for (const std::string& e : d.engines) engines += (engines.empty() ? "" : ", ") + e;
+      out += fmt::format("  {} vector {}: {}: {}{} [differs: {}]\n", d.batch, d.vector,
+                         Component(d), d.what.empty() ? "" : d.what + "; ", Values(d), engines);
+      for (const std::string& input : d.inputs) out += "      " + input + "\n";
+    }
+    size_t listed = 0;
+    for (const auto& [reason, count] : v.undefined) {
+      if (listed++ == 3) {
+        out += fmt::format("  undefined: ... and {} more reasons\n", v.undefined.size() - 3);
+        break;
+      }
+      out += fmt::format("  undefined ({} components): {}\n", count, reason);
+    }
+    for (const auto& [name, count] : v.deviations) {
+      out += fmt::format("  known deviation {} ({} components)\n", name, count);
+    }
+  }
+  out += fmt::format("verify: {} program(s): {} agree, {} disagree, {} error(s) ({})\n",
+                     verdicts.size(), agree, disagree, errors, setup);
+  fmt::print("{}", out);
+}
+
+nlohmann::ordered_json VerdictJson(const runtime::Verdict& v, size_t max_reports) {
+  nlohmann::ordered_json j;
+  j["file"] = v.name;
+  j["verdict"] = !v.error.empty() ? "error" : (v.disagreements.empty() ? "agree" : "disagree");
+  if (!v.error.empty()) j["error"] = v.error;
+  j["vectors"] = v.vectors;
+  j["compared"] = v.compared;
+  j["undefined"] = v.undefined;
+  j["unstable"] = v.unstable;
+  j["deviations"] = v.deviations;
+  j["disagreement_count"] = v.disagreements.size();
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const runtime::Disagreement& d : v.disagreements) {
+    if (list.size() == max_reports) break;
+    nlohmann::ordered_json jd = {{"batch", d.batch}, {"vector", d.vector}, {"register", d.reg}};
+    if (d.component >= 0) jd["component"] = std::string(1, "xyzw"[d.component]);
+    if (!d.what.empty()) jd["what"] = d.what;
+    if (d.component >= 0) jd["tolerance"] = arbvp::FloatToJson(d.tolerance);
+    nlohmann::ordered_json values = nlohmann::ordered_json::object();
+    for (const auto& [engine, value] : d.values) values[engine] = arbvp::FloatToJson(value);
+    jd["values"] = values;
+    jd["differs"] = d.engines;
+    jd["inputs"] = d.inputs;
+    list.push_back(std::move(jd));
+  }
+  j["disagreements"] = list;
+  return j;
+}
+
+// The subjects: each program alone, or with --pair one vertex + fragment pair.
+bool Subjects(const VerifyCommandOptions& options, const std::vector<LoadedArb>& loaded,
+              std::vector<runtime::VerifySubject>* subjects) {
+  if (!options.pair) {
+    for (const LoadedArb& l : loaded) {
+      runtime::VerifySubject s;
+      s.name = l.input.display_path;
+      bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
+      (vp ? s.vertex : s.fragment) = l.checked.program.get();
+      (vp ? s.vertex_source : s.fragment_source) = l.source.get();
+      subjects->push_back(s);
+    }
+    return true;
+  }
+  runtime::VerifySubject s;
+  for (const LoadedArb& l : loaded) {
+    bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
+    if (vp ? s.vertex != nullptr : s.fragment != nullptr) return false;
+    (vp ? s.vertex : s.fragment) = l.checked.program.get();
+    (vp ? s.vertex_source : s.fragment_source) = l.source.get();
+  }
+  if (!s.vertex || !s.fragment || loaded.size() != 2) return false;
+  s.name = loaded[0].input.display_path + " + " + loaded[1].input.display_path;
+  subjects->push_back(s);
+  return true;
+}
+
+int RunVerify(const VerifyCommandOptions& options) {
+  runtime::VerifyOptions verify;
+  if (!runtime::ParseBackend(options.backend, &verify.exec.backend)) return 2;
+  verify.exec.driver = options.driver;
+  verify.limits.timeout_ms = options.timeout_ms;
+  verify.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+  verify.generate.random_vectors = options.vectors;
+  verify.generate.seed = options.seed;
+  auto has = [&](const char* e) {
+    return std::find(options.engines.begin(), options.engines.end(), e) != options.engines.end();
+  };
+  verify.mesa_arb = has(runtime::kEngineMesaArb);
+  verify.mesa_glsl = has(runtime::kEngineMesaGlsl);
+  if (!has(runtime::kEngineRef) || !(verify.mesa_arb || verify.mesa_glsl)) {
+    fmt::print(stderr,
+               "arbiter: error: --engines: ref (the specification, every engine's reference) "
+               "and at least one of mesa-arb, mesa-glsl\n");
+    return static_cast<int>(Exit::Usage);
+  }
+  if (!arbvp::LookupMutation(options.mutation, &verify.emit.mutation)) {
+    fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
+    return static_cast<int>(Exit::Usage);
+  }
+
+  std::vector<LoadedArb> loaded;
+  Exit exit = LoadArbPrograms(options.common, &loaded);
+  if (exit == Exit::Usage) return static_cast<int>(exit);
+  std::vector<LoadedArb> valid;
+  for (LoadedArb& l : loaded) {
+    if (l.ok()) valid.push_back(std::move(l));
+  }
+  std::vector<runtime::VerifySubject> subjects;
+  if (!Subjects(options, valid, &subjects)) {
+    fmt::print(stderr,
+               "arbiter: error: --pair takes one vertex program and one fragment program\n");
+    return static_cast<int>(Exit::Usage);
+  }
+
+  std::vector<runtime::Verdict> verdicts = runtime::Verify(subjects, verify);
+  for (const runtime::Verdict& v : verdicts) {
+    if (!v.error.empty()) exit = Worse(exit, Exit::Environment);
+    if (!v.disagreements.empty()) exit = Worse(exit, Exit::Rejected);
+  }
+  std::string setup = fmt::format("seed {}, {} random vectors, {} via {}", options.seed,
+                                  options.vectors, options.driver, options.backend);
+  if (options.common.format == "json") {
+    nlohmann::ordered_json j;
+    j["seed"] = options.seed;
+    j["random_vectors"] = options.vectors;
+    j["driver"] = options.driver;
+    j["backend"] = options.backend;
+    j["engines"] = options.engines;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const runtime::Verdict& v : verdicts) {
+      list.push_back(VerdictJson(v, static_cast<size_t>(options.max_reports)));
+    }
+    j["programs"] = list;
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    PrintText(verdicts, options, setup);
+  }
+  return static_cast<int>(exit);
+}
+
+}  // namespace
+
+// Adds the `verify` subcommand to `app`; the returned function runs it once it is parsed.
+std::function<int()> AddVerifyCommand(CLI::App* app) {
+  auto options = std::make_shared<VerifyCommandOptions>();
+  CLI::App* cmd = app->add_subcommand(
+      "verify",
+      "run ARB programs on the reference interpreter, on Mesa and as their GLSL translation on "
+      "Mesa, over edge and random inputs, and report every disagreement");
+  cmd->footer(
+      "Each program is verified alone (--pair: one vertex and one fragment program together). "
+      "Components the specs leave undefined, components within rounding of a discontinuity and "
+      "known Mesa deviations are reported, not compared. Exit 1 on a disagreement. The "
+      "tolerance model: docs/verify.md.");
+  CommonOptions& common = options->common;
+  cmd->add_option("files", common.files, "ARB programs (directories are searched)")->required();
+  cmd->add_option("--engines", options->engines,
+                  "ref and the Mesa engines to compare with it: mesa-arb (the program), "
+                  "mesa-glsl (its translation)")
+      ->delimiter(',')
+      ->check(
+          CLI::IsMember({runtime::kEngineRef, runtime::kEngineMesaArb, runtime::kEngineMesaGlsl}));
+  cmd->add_option("--vectors", options->vectors, "random input vectors besides the edge vectors")
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--seed", options->seed, "seed of the random inputs");
+  cmd->add_flag("--pair", options->pair, "verify a vertex and a fragment program as a pair");
+  cmd->add_option("--max-reports", options->max_reports, "disagreements printed per program (text)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  cmd->add_option("--driver", options->driver, "Mesa's driver")
+      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
+  cmd->add_option("--format", common.format, "output format")
+      ->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--color", common.color, "colour diagnostics")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  cmd->add_option("--stage", common.stage, "the kind of a program read from stdin")
+      ->check(CLI::IsMember({"arbvp", "arbfp"}));
+  cmd->add_option("--timeout", options->timeout_ms,
+                  "time limit of the Mesa engines, ms per program")
+      ->check(CLI::Range(100, 3600000));
+  cmd->add_option("--memory-limit", options->memory_mib, "memory limit of the Mesa worker, MiB")
+      ->check(CLI::Range(256, 1 << 20));
+  cmd->add_option("--mutation", options->mutation)->group("");
+  return [options] { return RunVerify(*options); };
+}
+
+}  // namespace arbiter::cli
