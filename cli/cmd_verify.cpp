@@ -73,11 +73,11 @@ void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyComman
     if (!v.error.empty()) {
       ++errors;
       out += fmt::format("{}: error: {}\n", v.name, v.error);
-    }
-    if (v.disagreements.empty()) {
-      if (v.error.empty()) ++agree;
+    } else if (v.disagreements.empty()) {
+      ++agree;
       out += fmt::format("{}: agree ({})\n", v.name, Summary(v));
-    } else {
+    }
+    if (!v.disagreements.empty()) {
       ++disagree;
       out +=
           fmt::format("{}: {} disagreement(s) ({})\n", v.name, v.disagreements.size(), Summary(v));
@@ -169,7 +169,9 @@ bool Subjects(const VerifyCommandOptions& options, const std::vector<LoadedArb>&
 
 int RunVerify(const VerifyCommandOptions& options) {
   runtime::VerifyOptions verify;
-  if (!runtime::ParseBackend(options.backend, &verify.exec.backend)) return 2;
+  if (!runtime::ParseBackend(options.backend, &verify.exec.backend)) {
+    return static_cast<int>(Exit::Usage);
+  }
   verify.exec.driver = options.driver;
   verify.limits.timeout_ms = options.timeout_ms;
   verify.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;

@@ -478,9 +478,9 @@ void AddInvariantPosition(const ExecInputs& inputs, const VertexInput& in, Outpu
 // fog option no output is clamped: the engines read unclamped colour buffers.)
 void ApplyFog(const Program& program, const GlState& state, Val c, Reasons* reasons,
               Outputs* outputs) {
-  double start = state.fog_start;
-  double end = state.fog_end;
-  double density = state.fog_density;
+  double start = exec::Wide(state.fog_start);
+  double end = exec::Wide(state.fog_end);
+  double density = exec::Wide(state.fog_density);
   float f = 0.0f;
   float f_err = 0.0f;
   int why = c.why;
@@ -490,7 +490,8 @@ void ApplyFog(const Program& program, const GlState& state, Val c, Reasons* reas
       why = reasons->Add("ARB_fog_linear with fog start == fog end");
     }
     f_err = exec::CornerBound<1>(
-        f, {c}, [&](const D1& x) { return (end - x[0]) / (end - start); }, std::fabs(f), 0.0);
+        f, {c}, [&](const D1& x) { return (end - x[0]) / (end - start); }, exec::Wide(std::fabs(f)),
+        0.0);
   } else if (program.HasOption(OptionId::FogExp)) {
     f = std::exp(-(state.fog_density * c.v));
     f_err = exec::CornerBound<1>(
@@ -523,11 +524,11 @@ void ApplyFog(const Program& program, const GlState& state, Val c, Reasons* reas
       if (!(out.written & (1u << i))) continue;
       Val colour = out.value[i];
       float cr = std::clamp(colour.v, 0.0f, 1.0f);
-      double cf = std::clamp(state.fog_color[i], 0.0f, 1.0f);
+      double cf = exec::Wide(std::clamp(state.fog_color[i], 0.0f, 1.0f));
       float v = factor.v * cr + (1.0f - factor.v) * static_cast<float>(cf);
       // Drivers blend as cf + f * (cr - cf): the rounding of both forms.
-      double f64 = factor.v;
-      double c64 = cr;
+      double f64 = exec::Wide(factor.v);
+      double c64 = exec::Wide(cr);
       double magnitude = f64 * c64 + (1.0 - f64) * cf + cf + f64 * std::fabs(c64 - cf);
       float err = exec::CornerBound<2>(
           v, {factor, colour},

@@ -93,10 +93,10 @@ float DotBound(float v, const Val* a, const Val* b, size_t n, const Val* add) {
   double spread = 0.0;
   if (add) {
     if (std::isinf(add->err)) return kUnstable;
-    center = add->v;
+    center = Wide(add->v);
     magnitude = Abs(add->v);
     s.NoteOperand(add->v);
-    spread = add->err;
+    spread = Wide(add->err);
   }
   for (size_t i = 0; i < n; ++i) {
     if (std::isinf(a[i].err) || std::isinf(b[i].err)) return kUnstable;
@@ -107,8 +107,8 @@ float DotBound(float v, const Val* a, const Val* b, size_t n, const Val* add) {
     magnitude += std::fabs(p);
     if (a[i].err > 0.0f || b[i].err > 0.0f) {
       if (!std::isfinite(p)) s.MarkUnstable();
-      double ea = a[i].err;
-      double eb = b[i].err;
+      double ea = Wide(a[i].err);
+      double eb = Wide(b[i].err);
       spread += Abs(a[i].v) * eb + Abs(b[i].v) * ea + ea * eb;  // the box of the product
     }
   }
@@ -311,7 +311,7 @@ Reg OpLG2(OpContext& c) {
 // "(-128, +128) exclusive": epsilon is the step to the largest float below 128);
 // z = x > 0 ? RoughApproxPower(y, w) : 0, with 0^0 = 1.
 double LitZ(const D3& s) {
-  const double limit = std::nextafter(128.0f, 0.0f);
+  const double limit = Wide(std::nextafter(128.0f, 0.0f));
   double x = std::max(s[0], 0.0);
   double y = std::max(s[1], 0.0);
   double w = std::clamp(s[2], -limit, limit);

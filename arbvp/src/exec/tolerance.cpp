@@ -24,7 +24,7 @@ float Spread::Bound(double magnitude, double rel, double abs, bool reformulated)
     if (std::max({magnitude, v, largest_}) + e > 0x1p125) return kUnstable;
   }
   e += rel * v + abs;
-  constexpr double kMin = std::numeric_limits<float>::min();
+  const double kMin = Wide(std::numeric_limits<float>::min());
   if (v < kMin && (v != 0.0 || spread_ > 0.0)) e += kMin;
   if (v + e > static_cast<double>(std::numeric_limits<float>::max())) return kUnstable;
   return RoundUp(e);

@@ -82,7 +82,7 @@ float CornerBound(float v, const std::array<Val, N>& in, F f, double magnitude, 
   std::array<double, N> x{};
   for (size_t i = 0; i < N; ++i) {
     if (std::isinf(in[i].err)) return kUnstable;
-    x[i] = in[i].v;
+    x[i] = Wide(in[i].v);
   }
   Spread s(v);
   s.Add(f(x));
