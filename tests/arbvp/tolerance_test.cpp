@@ -102,11 +102,9 @@ TEST(ToleranceExact, ExactOperationsOnExactInputsHaveToleranceZero) {
     float value;
   };
   const Case cases[] = {
-      {"MOV o, 7;\n", 7.0f},        {"ADD o, 1, 2;\n", 3.0f},     {"MUL o, 2, 3;\n", 6.0f},
-      {"MAD o, 2, 3, 4;\n", 10.0f}, {"SUB o, 1, 3;\n", -2.0f},    {"FLR o, 2.5;\n", 2.0f},
-      {"FRC o, 2.5;\n", 0.5f},      {"MAX o, 1, 2;\n", 2.0f},     {"MIN o, 1, 2;\n", 1.0f},
-      {"SGE o, 1, 2;\n", 0.0f},     {"SGE o, 2, 1;\n", 1.0f},     {"SLT o, 1, 2;\n", 1.0f},
-      {"ABS o, -4;\n", 4.0f},       {"MUL o, 1e38, 1;\n", 1e38f},
+      {"MOV o, 7;\n", 7.0f},    {"FLR o, 2.5;\n", 2.0f},  {"FRC o, 2.5;\n", 0.5f},
+      {"MAX o, 1, 2;\n", 2.0f}, {"MIN o, 1, 2;\n", 1.0f}, {"SGE o, 1, 2;\n", 0.0f},
+      {"SGE o, 2, 1;\n", 1.0f}, {"SLT o, 1, 2;\n", 1.0f}, {"ABS o, -4;\n", 4.0f},
   };
   for (const Case& c : cases) {
     OutputRegister o = Vp(c.body);
@@ -123,12 +121,34 @@ TEST(ToleranceExact, ExactOperationsOnExactInputsHaveToleranceZero) {
   EXPECT_EQ(cmp.tolerance, (std::array<float, 4>{0, 0, 0, 0}));
 }
 
+// Sums and products may be reassociated with their neighbours by the compiler (no `precise`
+// in ARB or GLSL 1.10): exact ones keep kRounding of their terms' magnitude.
+TEST(ToleranceRounding, ExactArithmeticKeepsTheReassociationAllowance) {
+  struct Case {
+    const char* body;
+    float value;
+    double terms;
+  };
+  const Case cases[] = {
+      {"ADD o, 1, 2;\n", 3.0f, 1 + 2 + 3},
+      {"SUB o, 1, 3;\n", -2.0f, 1 + 3 + 2},
+      {"MUL o, 2, 3;\n", 6.0f, 6},
+      {"MAD o, 2, 3, 4;\n", 10.0f, 6 + 4 + 10},
+  };
+  for (const Case& c : cases) {
+    OutputRegister o = Vp(c.body);
+    EXPECT_EQ(o.value[0], c.value) << c.body;
+    EXPECT_EQ(Wide(o.tolerance[0]), kRounding * c.terms) << c.body;
+  }
+}
+
 TEST(ToleranceRounding, InexactAddGetsAboutOneUlpOfTheResult) {
   OutputRegister o = Vp("ADD o, 1, 1e-8;\n");
   EXPECT_EQ(o.value[0], 1.0f);
   // The rounded-away 1e-8 plus kRounding of the result's magnitude.
   EXPECT_GE(Wide(o.tolerance[0]), kRounding * 1.0 + 0.99e-8);
-  EXPECT_LE(Wide(o.tolerance[0]), 2.0 * Ulp(1.0f));
+  // ... of the terms' magnitude (1 + 1e-8 + 1): a reassociated sum.
+  EXPECT_LE(Wide(o.tolerance[0]), 3.0 * Ulp(1.0f));
 }
 
 TEST(ToleranceRounding, InexactMultiplyIsBoundedByItsRoundingAndAUlp) {
@@ -334,8 +354,10 @@ TEST(ToleranceUnstable, InexactValuesNearFloatOverflowAreUnstable) {
   EXPECT_EQ(below.value[0], 1e37f);
   EXPECT_LT(below.tolerance[0], kInf);
   EXPECT_GE(Wide(below.tolerance[0]), kRounding * 1e37);
-  // An exact operation there is not rounded, so it stays comparable.
-  EXPECT_EQ(Vp("MUL o, 1e38, 1;\n").tolerance[0], 0.0f);
+  // Exact arithmetic there too: a compiler may reassociate it with its neighbours.
+  EXPECT_EQ(Vp("MUL o, 1e38, 1;\n").tolerance[0], kInf);
+  // A move is no arithmetic: it stays comparable.
+  EXPECT_EQ(Vp("MOV o, 1e38;\n").tolerance[0], 0.0f);
 }
 
 // ---- denormals ---------------------------------------------------------------------------

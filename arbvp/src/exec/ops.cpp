@@ -29,7 +29,9 @@ using D2 = std::array<double, 2>;
 using D1 = std::array<double, 1>;
 
 // A component-wise operation: `f` in float32 (the value), `g` the same function of doubles
-// (the tolerance model's real function), `magnitude` of the terms for the rounding allowance.
+// (the tolerance model's real function), `magnitude` of the terms for the rounding allowance;
+// `arithmetic`: a sum or product that a compiler may reassociate with its neighbours (GLSL
+// and ARB programs have no `precise`), so even an exact result gets the allowance.
 template <typename F, typename G, typename M>
 Reg Map1(const OpContext& c, F f, G g, M magnitude) {
   const Reg& a = c.src[0];
@@ -42,19 +44,21 @@ Reg Map1(const OpContext& c, F f, G g, M magnitude) {
 }
 
 template <typename F, typename G, typename M>
-Reg Map2(const OpContext& c, F f, G g, M magnitude) {
+Reg Map2(const OpContext& c, F f, G g, M magnitude, bool arithmetic = false) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   Reg r;
   for (size_t i = 0; i < 4; ++i) {
     float v = f(a[i].v, b[i].v);
-    r[i] = From(v, {a[i], b[i]}, CornerBound<2>(v, {a[i], b[i]}, g, magnitude(a[i].v, b[i].v, v)));
+    r[i] = From(
+        v, {a[i], b[i]},
+        CornerBound<2>(v, {a[i], b[i]}, g, magnitude(a[i].v, b[i].v, v), 0.0, 0.0, arithmetic));
   }
   return r;
 }
 
 template <typename F, typename G, typename M>
-Reg Map3(const OpContext& c, F f, G g, M magnitude) {
+Reg Map3(const OpContext& c, F f, G g, M magnitude, bool arithmetic = false) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   const Reg& d = c.src[2];
@@ -62,7 +66,8 @@ Reg Map3(const OpContext& c, F f, G g, M magnitude) {
   for (size_t i = 0; i < 4; ++i) {
     float v = f(a[i].v, b[i].v, d[i].v);
     r[i] = From(v, {a[i], b[i], d[i]},
-                CornerBound<3>(v, {a[i], b[i], d[i]}, g, magnitude(a[i].v, b[i].v, d[i].v, v)));
+                CornerBound<3>(v, {a[i], b[i], d[i]}, g, magnitude(a[i].v, b[i].v, d[i].v, v), 0.0,
+                               0.0, arithmetic));
   }
   return r;
 }
@@ -71,6 +76,7 @@ double Abs(float x) { return std::fabs(static_cast<double>(x)); }
 // The magnitude of a result alone (a single rounding).
 constexpr auto kOwn1 = [](float, float v) { return Abs(v); };
 constexpr auto kOwn2 = [](float, float, float v) { return Abs(v); };
+constexpr auto kTerms2 = [](float a, float b, float v) { return Abs(a) + Abs(b) + Abs(v); };
 
 Reg Replicate(Val v) { return {v, v, v, v}; }
 
@@ -128,7 +134,8 @@ Reg OpABS(OpContext& c) {
 // ADD: result = tmp0 + tmp1
 Reg OpADD(OpContext& c) {
   return Map2(
-      c, [](float a, float b) { return a + b; }, [](const D2& x) { return x[0] + x[1]; }, kOwn2);
+      c, [](float a, float b) { return a + b; }, [](const D2& x) { return x[0] + x[1]; }, kTerms2,
+      /*arithmetic=*/true);
 }
 
 // ARL: result = floor(ScalarLoad(op0)), into the address register's x. An address within
@@ -419,7 +426,8 @@ Reg OpMAD(OpContext& c) {
   return Map3(
       c, [](float a, float b, float d) { return a * b + d; },
       [](const D3& x) { return x[0] * x[1] + x[2]; },
-      [](float a, float b, float, float v) { return Abs(a) * Abs(b) + Abs(v); });
+      [](float a, float b, float d, float v) { return Abs(a) * Abs(b) + Abs(d) + Abs(v); },
+      /*arithmetic=*/true);
 }
 
 // MAX and MIN as the specs write them; where that gives NaN from one NaN operand, Mesa's
@@ -456,7 +464,8 @@ Reg OpMOV(OpContext& c) { return c.src[0]; }
 // MUL: tmp0 * tmp1
 Reg OpMUL(OpContext& c) {
   return Map2(
-      c, [](float a, float b) { return a * b; }, [](const D2& x) { return x[0] * x[1]; }, kOwn2);
+      c, [](float a, float b) { return a * b; }, [](const D2& x) { return x[0] * x[1]; }, kOwn2,
+      /*arithmetic=*/true);
 }
 
 // POW: ApproxPower(tmp0, tmp1) = ApproxExp2(tmp1 * ApproxLog2(tmp0)), replicated. A negative
@@ -561,7 +570,8 @@ Reg OpSLT(OpContext& c) {
 // SUB: tmp0 - tmp1
 Reg OpSUB(OpContext& c) {
   return Map2(
-      c, [](float a, float b) { return a - b; }, [](const D2& x) { return x[0] - x[1]; }, kOwn2);
+      c, [](float a, float b) { return a - b; }, [](const D2& x) { return x[0] - x[1]; }, kTerms2,
+      /*arithmetic=*/true);
 }
 
 // SWZ: the extended swizzle (selection, 0, 1 and per-component negation) is applied when

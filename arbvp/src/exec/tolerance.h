@@ -9,7 +9,8 @@
 //   outcome agrees.
 // - A result the reference rounded, or computed from inexact operands, may differ by the
 //   rounding of another evaluation order or a fused multiply-add: kRounding times the
-//   magnitude of the terms.
+//   magnitude of the terms. Arithmetic gets it even when exact: compilers reassociate sums
+//   and products across instructions (no `precise` in ARB or GLSL 1.10).
 // - Approximated operations add what the specs allow them: kApprox relative (RCP, RSQ, EX2,
 //   POW) or absolute (LG2, SIN, COS), kRough for EXP.z, LOG.z and LIT.z.
 // - A denormal may be flushed to zero: FLT_MIN more.
