@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "../runtime/test_executor.h"
 #include "arbiter/arbvp/check.h"
 #include "arbiter/runtime/exec.h"
 #include "case_compare.h"
@@ -24,30 +25,12 @@ namespace {
 using arbvp::OutputRegister;
 using arbvp::VectorResult;
 
-std::string Env(const char* name, const char* fallback) {
-  const char* v = std::getenv(name);
-  return v && *v ? v : fallback;
-}
-
-runtime::ExecOptions Options() {
-  runtime::ExecOptions o;
-  std::string backend = Env("ARBITER_TEST_BACKEND", "osmesa");
-  EXPECT_TRUE(runtime::ParseBackend(backend, &o.backend)) << backend;
-  o.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
-  return o;
-}
-
 // One context for the whole run, as `verify` uses it: many programs one after another.
 runtime::ArbExecutor* Executor() {
-  static std::unique_ptr<runtime::ArbExecutor> executor;
-  static std::string error;
-  static bool tried = false;
-  if (!tried) {
-    tried = true;
-    executor = runtime::CreateArbExecutor(Options(), &error);
-  }
+  std::string error;
+  runtime::ArbExecutor* executor = runtime::testing::SharedExecutor(&error);
   EXPECT_NE(executor, nullptr) << error;
-  return executor.get();
+  return executor;
 }
 
 // "case-name result.color.y" keys, per driver (or "*"), from mesa-deviations.txt.
@@ -61,7 +44,7 @@ const Deviations& KnownDeviations() {
     Deviations out;
     std::ifstream in(ARBITER_TEST_DIR "/mesa-deviations.txt");
     std::string line;
-    const std::string driver = Env("ARBITER_TEST_DRIVER", "softpipe");
+    const std::string driver = runtime::testing::TestDriver();
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#') continue;
       std::istringstream fields(line);

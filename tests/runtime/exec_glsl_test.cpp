@@ -17,32 +17,14 @@
 #include "arbiter/arbvp/check.h"
 #include "arbiter/arbvp/interpret.h"
 #include "arbiter/runtime/exec.h"
+#include "test_executor.h"
 
 namespace arbiter::runtime {
 namespace {
 
 using arbvp::Vec4;
 
-std::string Env(const char* name, const char* fallback) {
-  const char* value = std::getenv(name);
-  return value != nullptr && *value != '\0' ? value : fallback;
-}
-
-// One executor per process (a context per test would cost most of the run on llvmpipe).
-ArbExecutor* Executor(std::string* error) {
-  static std::string create_error;
-  static std::unique_ptr<ArbExecutor> executor = [] {
-    ExecOptions options;
-    if (!ParseBackend(Env("ARBITER_TEST_BACKEND", "osmesa"), &options.backend)) {
-      create_error = "bad ARBITER_TEST_BACKEND";
-      return std::unique_ptr<ArbExecutor>();
-    }
-    options.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
-    return CreateArbExecutor(options, &create_error);
-  }();
-  *error = create_error;
-  return executor.get();
-}
+ArbExecutor* Executor(std::string* error) { return testing::SharedExecutor(error); }
 
 const arbvp::OutputRegister* Find(const arbvp::VectorResult& result, const std::string& name) {
   for (const arbvp::OutputRegister& out : result.outputs) {

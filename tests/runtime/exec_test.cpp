@@ -20,35 +20,16 @@
 #include <vector>
 
 #include "arbiter/arbvp/check.h"
+#include "test_executor.h"
 
 namespace arbiter::runtime {
 namespace {
 
 using arbvp::Vec4;
 
-std::string Env(const char* name, const char* fallback) {
-  const char* value = std::getenv(name);
-  return value != nullptr && *value != '\0' ? value : fallback;
-}
+ArbExecutor* Executor(std::string* error) { return testing::SharedExecutor(error); }
 
-// One executor per process, shared by every test (a context per test would cost most of the
-// run on llvmpipe).
-ArbExecutor* Executor(std::string* error) {
-  static std::string create_error;
-  static std::unique_ptr<ArbExecutor> executor = [] {
-    ExecOptions options;
-    if (!ParseBackend(Env("ARBITER_TEST_BACKEND", "osmesa"), &options.backend)) {
-      create_error = "bad ARBITER_TEST_BACKEND";
-      return std::unique_ptr<ArbExecutor>();
-    }
-    options.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
-    return CreateArbExecutor(options, &create_error);
-  }();
-  *error = create_error;
-  return executor.get();
-}
-
-bool Llvmpipe() { return Env("ARBITER_TEST_DRIVER", "softpipe") == "llvmpipe"; }
+bool Llvmpipe() { return testing::TestDriver() == "llvmpipe"; }
 
 class ExecTest : public ::testing::Test {
  protected:
