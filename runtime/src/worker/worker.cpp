@@ -48,6 +48,10 @@ void WriteAll(int fd, const char* data, size_t size) {
 [[noreturn]] void RunChild(int fd, const WorkerLimits& limits, const WorkerJob& job) {
   // Die with the parent rather than run on as an orphan.
   prctl(PR_SET_PDEATHSIG, SIGKILL);
+  // Drop the descriptors inherited from the parent (other threads' worker pipes among them:
+  // a copy of another worker's write end would hold back that worker's end of answer).
+  if (fd > 3) close_range(3, static_cast<unsigned>(fd) - 1, 0);
+  close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
 #ifndef ARBITER_SANITIZED
   rlimit limit{limits.memory_bytes, limits.memory_bytes};
   setrlimit(RLIMIT_AS, &limit);
