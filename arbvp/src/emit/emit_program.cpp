@@ -112,6 +112,9 @@ std::string EmitShader(Context& ctx) {
   }
   if (p.HasOption(OptionId::PositionInvariant)) {
     locals += "gl_Position = ftransform();  // OPTION ARB_position_invariant\n";
+    // Clipping against user planes happens in eye space as without a program; GLSL 1.10
+    // leaves it undefined unless gl_ClipVertex is written (7.1).
+    locals += "gl_ClipVertex = gl_ModelViewMatrix * gl_Vertex;\n";
     ctx.outputs["result.position"] =
         RegisterMapping{"result.position", "gl_Position", ProgramKind::Vertex};
   } else if (ctx.IsVertex() && !ctx.outputs.count("result.position")) {

@@ -5,6 +5,7 @@ void main() {
   vec4 n = vec4(0.0);
   vec4 d = vec4(0.0);
   gl_Position = ftransform();  // OPTION ARB_position_invariant
+  gl_ClipVertex = gl_ModelViewMatrix * gl_Vertex;
 
   // DP3 n.x, mvit[0], iNrm;
   n.x = dot(gl_ModelViewMatrixInverse[0].xyz, gl_Normal);
