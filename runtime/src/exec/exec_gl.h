@@ -55,6 +55,58 @@ namespace arbiter::runtime::exec {
   X(decltype(&glTexImage3D), TexImage3D, "glTexImage3D")                                          \
   X(decltype(&glActiveTexture), ActiveTexture, "glActiveTexture")                                 \
   X(decltype(&glMultiTexCoord4fv), MultiTexCoord4fv, "glMultiTexCoord4fv")                        \
+  X(decltype(&glPushAttrib), PushAttrib, "glPushAttrib")                                          \
+  X(decltype(&glPopAttrib), PopAttrib, "glPopAttrib")                                             \
+  X(decltype(&glPushClientAttrib), PushClientAttrib, "glPushClientAttrib")                        \
+  X(decltype(&glPopClientAttrib), PopClientAttrib, "glPopClientAttrib")                           \
+  X(decltype(&glColorMask), ColorMask, "glColorMask")                                             \
+  X(decltype(&glBlendFunc), BlendFunc, "glBlendFunc")                                             \
+  X(decltype(&glClearDepth), ClearDepth, "glClearDepth")                                          \
+  X(decltype(&glDepthFunc), DepthFunc, "glDepthFunc")                                             \
+  X(decltype(&glShadeModel), ShadeModel, "glShadeModel")                                          \
+  X(decltype(&glHint), Hint, "glHint")                                                            \
+  X(decltype(&glOrtho), Ortho, "glOrtho")                                                         \
+  X(decltype(&glFrustum), Frustum, "glFrustum")                                                   \
+  X(decltype(&glDrawArrays), DrawArrays, "glDrawArrays")                                          \
+  X(decltype(&glVertexPointer), VertexPointer, "glVertexPointer")                                 \
+  X(decltype(&glNormalPointer), NormalPointer, "glNormalPointer")                                 \
+  X(decltype(&glColorPointer), ColorPointer, "glColorPointer")                                    \
+  X(decltype(&glTexCoordPointer), TexCoordPointer, "glTexCoordPointer")                           \
+  X(decltype(&glEnableClientState), EnableClientState, "glEnableClientState")                     \
+  X(decltype(&glDisableClientState), DisableClientState, "glDisableClientState")                  \
+  X(decltype(&glClientActiveTexture), ClientActiveTexture, "glClientActiveTexture")               \
+  X(decltype(&glGetFloatv), GetFloatv, "glGetFloatv")                                             \
+  X(decltype(&glGetClipPlane), GetClipPlane, "glGetClipPlane")                                    \
+  X(decltype(&glTexParameterfv), TexParameterfv, "glTexParameterfv")                              \
+  X(decltype(&glTexParameterf), TexParameterf, "glTexParameterf")                                 \
+  X(decltype(&glPolygonMode), PolygonMode, "glPolygonMode")                                       \
+  X(PFNGLSECONDARYCOLORPOINTERPROC, SecondaryColorPointer, "glSecondaryColorPointer")             \
+  X(PFNGLFOGCOORDPOINTERPROC, FogCoordPointer, "glFogCoordPointer")                               \
+  X(PFNGLGETATTRIBLOCATIONPROC, GetAttribLocation, "glGetAttribLocation")                         \
+  X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer, "glVertexAttribPointer")                   \
+  X(PFNGLVERTEXATTRIBIPOINTERPROC, VertexAttribIPointer, "glVertexAttribIPointer")                \
+  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray, "glEnableVertexAttribArray")       \
+  X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray, "glDisableVertexAttribArray")    \
+  X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap, "glGenerateMipmap")                                  \
+  X(PFNGLUNIFORM1FVPROC, Uniform1fv, "glUniform1fv")                                              \
+  X(PFNGLUNIFORM2FVPROC, Uniform2fv, "glUniform2fv")                                              \
+  X(PFNGLUNIFORM3FVPROC, Uniform3fv, "glUniform3fv")                                              \
+  X(PFNGLUNIFORM1IVPROC, Uniform1iv, "glUniform1iv")                                              \
+  X(PFNGLUNIFORM2IVPROC, Uniform2iv, "glUniform2iv")                                              \
+  X(PFNGLUNIFORM3IVPROC, Uniform3iv, "glUniform3iv")                                              \
+  X(PFNGLUNIFORM4IVPROC, Uniform4iv, "glUniform4iv")                                              \
+  X(PFNGLUNIFORM1UIVPROC, Uniform1uiv, "glUniform1uiv")                                           \
+  X(PFNGLUNIFORM2UIVPROC, Uniform2uiv, "glUniform2uiv")                                           \
+  X(PFNGLUNIFORM3UIVPROC, Uniform3uiv, "glUniform3uiv")                                           \
+  X(PFNGLUNIFORM4UIVPROC, Uniform4uiv, "glUniform4uiv")                                           \
+  X(PFNGLUNIFORMMATRIX2FVPROC, UniformMatrix2fv, "glUniformMatrix2fv")                            \
+  X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv, "glUniformMatrix3fv")                            \
+  X(PFNGLUNIFORMMATRIX2X3FVPROC, UniformMatrix2x3fv, "glUniformMatrix2x3fv")                      \
+  X(PFNGLUNIFORMMATRIX2X4FVPROC, UniformMatrix2x4fv, "glUniformMatrix2x4fv")                      \
+  X(PFNGLUNIFORMMATRIX3X2FVPROC, UniformMatrix3x2fv, "glUniformMatrix3x2fv")                      \
+  X(PFNGLUNIFORMMATRIX3X4FVPROC, UniformMatrix3x4fv, "glUniformMatrix3x4fv")                      \
+  X(PFNGLUNIFORMMATRIX4X2FVPROC, UniformMatrix4x2fv, "glUniformMatrix4x2fv")                      \
+  X(PFNGLUNIFORMMATRIX4X3FVPROC, UniformMatrix4x3fv, "glUniformMatrix4x3fv")                      \
   X(PFNGLSECONDARYCOLOR3FVPROC, SecondaryColor3fv, "glSecondaryColor3fv")                         \
   X(PFNGLFOGCOORDFPROC, FogCoordf, "glFogCoordf")                                                 \
   X(PFNGLPOINTPARAMETERFPROC, PointParameterf, "glPointParameterf")                               \
