@@ -18,6 +18,8 @@ std::function<int()> AddExecCommand(CLI::App* app);
 std::function<int()> AddTranslateCommand(CLI::App* app);
 // cmd_verify.cpp: adds the `verify` subcommand.
 std::function<int()> AddVerifyCommand(CLI::App* app);
+// cmd_run.cpp: adds the `run` subcommand.
+std::function<int()> AddRunCommand(CLI::App* app);
 }  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
@@ -41,6 +43,7 @@ int main(int argc, char** argv) {
   std::function<int()> run_translate = arbiter::cli::AddTranslateCommand(&app);
   std::function<int()> run_exec = arbiter::cli::AddExecCommand(&app);
   std::function<int()> run_verify = arbiter::cli::AddVerifyCommand(&app);
+  std::function<int()> run_tests = arbiter::cli::AddRunCommand(&app);
 
   try {
     // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
@@ -60,5 +63,6 @@ int main(int argc, char** argv) {
   if (app.get_subcommand("translate")->parsed()) return run_translate();
   if (app.get_subcommand("exec")->parsed()) return run_exec();
   if (app.get_subcommand("verify")->parsed()) return run_verify();
+  if (app.get_subcommand("run")->parsed()) return run_tests();
   return static_cast<int>(Exit::Usage);
 }

@@ -1,0 +1,169 @@
+// arbiter run: piglit-format shader tests (.shader_test) on Mesa, PASS / FAIL / SKIP per
+// test, with JUnit XML and PNG pictures on request.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <thread>
+
+#include "arbiter/compiler/source.h"
+#include "arbiter/runtime/shader_test.h"
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunCommandOptions {
+  std::vector<std::string> files;
+  bool translate = false;
+  std::string backend = "osmesa";
+  std::string driver = "softpipe";
+  int jobs = 0;
+  std::string junit;
+  std::string png;
+  int timeout_ms = 60000;
+  int memory_mib = 8192;
+};
+
+// The tests of the arguments: files as given, directories searched (recursively, sorted)
+// for *.shader_test. `names` gets each test's PNG name: its path under the directory given,
+// or its file name, with .png for .shader_test. False when an argument does not exist or a
+// directory holds no test.
+bool ExpandTests(const std::vector<std::string>& args, std::vector<std::string>* paths,
+                 std::vector<std::string>* names) {
+  bool ok = true;
+  for (const std::string& arg : args) {
+    std::error_code ec;
+    auto png_name = [](fs::path relative) { return relative.replace_extension(".png").string(); };
+    if (fs::is_directory(arg, ec)) {
+      std::vector<fs::path> found;
+      for (fs::recursive_directory_iterator it(arg, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it->is_regular_file(ec) && it->path().extension() == ".shader_test") {
+          found.push_back(it->path());
+        }
+      }
+      std::sort(found.begin(), found.end());
+      if (found.empty()) {
+        fmt::print(stderr, "arbiter: error: {}: no .shader_test files\n", arg);
+        ok = false;
+      }
+      for (const fs::path& p : found) {
+        paths->push_back(p.string());
+        names->push_back(png_name(p.lexically_relative(arg)));
+      }
+    } else {
+      // Missing and unreadable files fail as tests, with their reason.
+      paths->push_back(arg);
+      names->push_back(png_name(fs::path(arg).filename()));
+    }
+  }
+  return ok;
+}
+
+void PrintResult(const runtime::ShaderTestResult& r) {
+  std::string out;
+  const std::string_view status = runtime::TestStatusName(r.status);
+  if (r.status == runtime::TestStatus::Pass) {
+    out = fmt::format("PASS {}\n", r.path);
+  } else {
+    out = fmt::format("{} {}\n", status, r.path);
+    size_t pos = 0;
+    while (pos < r.message.size()) {
+      size_t end = r.message.find('\n', pos);
+      if (end == std::string::npos) end = r.message.size();
+      out += fmt::format("  {}\n", r.message.substr(pos, end - pos));
+      pos = end + 1;
+    }
+    for (const std::string& d : r.diagnostics) out += fmt::format("  {}\n", d);
+  }
+  for (const std::string& w : r.warnings) out += fmt::format("  warning: {}\n", w);
+  fmt::print("{}", out);
+}
+
+int RunTests(const RunCommandOptions& options) {
+  runtime::RunOptions run;
+  if (!runtime::ParseBackend(options.backend, &run.exec.backend)) {
+    return static_cast<int>(Exit::Usage);
+  }
+  run.exec.driver = options.driver;
+  run.translate = options.translate;
+  run.jobs = options.jobs > 0 ? options.jobs
+                              : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  run.limits.timeout_ms = options.timeout_ms;
+  run.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+  std::vector<std::string> paths;
+  Exit exit = ExpandTests(options.files, &paths, &run.png_names) ? Exit::Ok : Exit::Rejected;
+  if (!options.png.empty()) {
+    std::error_code ec;
+    fs::create_directories(options.png, ec);
+    if (ec) {
+      fmt::print(stderr, "arbiter: error: {}: {}\n", options.png, ec.message());
+      return static_cast<int>(Exit::Environment);
+    }
+    run.png_dir = options.png;
+  }
+  if (!options.junit.empty() &&
+      std::find(paths.begin(), paths.end(), options.junit) != paths.end()) {
+    fmt::print(stderr, "arbiter: error: --junit {} would overwrite an input\n", options.junit);
+    return static_cast<int>(Exit::Usage);
+  }
+
+  const std::vector<runtime::ShaderTestResult> results = runtime::RunShaderTests(paths, run);
+  size_t passed = 0, failed = 0, skipped = 0;
+  for (const runtime::ShaderTestResult& r : results) {
+    PrintResult(r);
+    passed += r.status == runtime::TestStatus::Pass ? 1 : 0;
+    failed += r.status == runtime::TestStatus::Fail ? 1 : 0;
+    skipped += r.status == runtime::TestStatus::Skip ? 1 : 0;
+  }
+  fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,
+             options.driver, options.backend, options.translate ? ", ARB translated to GLSL" : "");
+  if (failed > 0) exit = Worse(exit, Exit::Rejected);
+  for (const runtime::ShaderTestResult& r : results) {
+    if (r.environment) exit = Worse(exit, Exit::Environment);
+  }
+  if (!options.junit.empty()) {
+    std::string error;
+    const std::string suite = options.translate ? "arbiter run --translate" : "arbiter run";
+    if (!compiler::WriteFileAtomically(options.junit, runtime::JunitXml(results, suite), &error)) {
+      fmt::print(stderr, "arbiter: error: {}: {}\n", options.junit, error);
+      exit = Worse(exit, Exit::Environment);
+    }
+  }
+  return static_cast<int>(exit);
+}
+
+}  // namespace
+
+// Adds the `run` subcommand to `app`; the returned function runs it once it is parsed.
+std::function<int()> AddRunCommand(CLI::App* app) {
+  auto options = std::make_shared<RunCommandOptions>();
+  CLI::App* cmd = app->add_subcommand(
+      "run", "run piglit-format shader tests (.shader_test) on Mesa: PASS, FAIL or SKIP each");
+  cmd->footer(
+      "Each test runs in a worker process with its own time and memory limit; a test that "
+      "crashes or hangs fails alone. Exit 1 when a test fails. The format and arbiter's "
+      "extensions: docs/run.md.");
+  cmd->add_option("files", options->files, "shader tests (directories are searched)")->required();
+  cmd->add_flag("--translate", options->translate,
+                "run ARB programs as arbiter's GLSL translation instead of Mesa's ARB path");
+  cmd->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  cmd->add_option("--driver", options->driver, "Mesa's driver")
+      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
+  cmd->add_option("-j,--jobs", options->jobs, "worker processes (default: one per core)")
+      ->check(CLI::Range(0, 256));
+  cmd->add_option("--junit", options->junit, "also write the results as JUnit XML to this file");
+  cmd->add_option("--png", options->png, "save each test's picture as PNG under this folder");
+  cmd->add_option("--timeout", options->timeout_ms, "time limit per test, ms")
+      ->check(CLI::Range(100, 3600000));
+  cmd->add_option("--memory-limit", options->memory_mib, "memory limit of a worker, MiB")
+      ->check(CLI::Range(256, 1 << 20));
+  return [options] { return RunTests(*options); };
+}
+
+}  // namespace arbiter::cli
