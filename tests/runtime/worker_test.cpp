@@ -122,5 +122,34 @@ TEST(Worker, EnforcesTheMemoryLimit) {
 }
 #endif
 
+TEST(Worker, RunsManyJobsInParallelEachToItsOwnEnd) {
+  // Job i answers its index; job 1 crashes, job 3 hangs past the limit. Two at a time.
+  WorkerLimits limits;
+  limits.timeout_ms = 1000;
+  std::vector<WorkerResult> results;
+  const auto start = std::chrono::steady_clock::now();
+  RunInWorkers(
+      limits, 6, 2,
+      [](size_t i) -> WorkerJob {
+        return [i](std::string* out, std::string*) {
+          if (i == 1) raise(SIGSEGV);
+          if (i == 3) std::this_thread::sleep_for(std::chrono::seconds(30));
+          *out = std::to_string(i) + std::string(100000, '.');  // larger than a pipe buffer
+          return true;
+        };
+      },
+      &results);
+  ASSERT_EQ(results.size(), 6u);
+  for (size_t i : {0u, 2u, 4u, 5u}) {
+    ASSERT_EQ(results[i].status, WorkerStatus::Ok) << i << ": " << results[i].error;
+    EXPECT_EQ(results[i].payload.substr(0, 1), std::to_string(i));
+    EXPECT_EQ(results[i].payload.size(), 100001u);
+  }
+  EXPECT_EQ(results[1].status, WorkerStatus::Crashed);
+  EXPECT_EQ(results[3].status, WorkerStatus::TimedOut);
+  // The hang cost one time limit, not one per job behind it.
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+}
+
 }  // namespace
 }  // namespace arbiter::runtime

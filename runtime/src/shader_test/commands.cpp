@@ -66,7 +66,8 @@ void Session::Execute(const ShaderTestLine& command) {
            if (a.size() != 5) s->Error("expected 'clip plane i a b c d'");
            const int i = s->Int(a, 0);
            if (i < 0 || i >= 8) s->Error(fmt::format("clip plane {} out of range", i));
-           const double p[4] = {s->Float(a, 1), s->Float(a, 2), s->Float(a, 3), s->Float(a, 4)};
+           double p[4];
+           for (size_t k = 0; k < 4; ++k) p[k] = static_cast<double>(s->Float(a, k + 1));
            s->gl_.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + i), p);
          }},
         {"texcoord",

@@ -3,14 +3,11 @@
 // runs out of memory is run again one test per worker, so that only the guilty test fails.
 #include <fmt/format.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <thread>
 
 #include "arbiter/compiler/source.h"
 #include "arbiter/runtime/mesa.h"
@@ -164,15 +161,19 @@ ShaderTestResult FromJson(const std::string& path, const nlohmann::json& j) {
   return r;
 }
 
-// Runs tests [first, first + count) in one worker; false when the worker did not answer.
-bool RunChunk(const std::vector<std::string>& paths, size_t first, size_t count,
-              const RunOptions& options, std::vector<ShaderTestResult>* results,
-              std::string* error) {
-  auto job = [&](std::string* payload, std::string* job_error) {
+// A chunk of tests for one worker: [first, first + count).
+struct Chunk {
+  size_t first = 0;
+  size_t count = 0;
+};
+
+// The job that runs one chunk on one GL context; its payload is a JSON array of results.
+WorkerJob ChunkJob(const std::vector<std::string>& paths, Chunk chunk, const RunOptions& options) {
+  return [&paths, chunk, &options](std::string* payload, std::string* job_error) {
     Runner runner;
     if (!runner.Create(options, job_error)) return false;
     nlohmann::json out = nlohmann::json::array();
-    for (size_t i = first; i < first + count; ++i) {
+    for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
       const std::string png = options.png_dir.empty() || i >= options.png_names.size()
                                   ? ""
                                   : options.png_dir + "/" + options.png_names[i];
@@ -181,28 +182,54 @@ bool RunChunk(const std::vector<std::string>& paths, size_t first, size_t count,
     *payload = out.dump();
     return true;
   };
+}
+
+// Runs the chunks, -j at a time; fills their results and returns the chunks whose worker
+// gave no answer (crashed, hung, out of memory), with the reason in `errors`.
+std::vector<Chunk> RunChunks(const std::vector<std::string>& paths,
+                             const std::vector<Chunk>& chunks, const RunOptions& options,
+                             std::vector<ShaderTestResult>* results,
+                             std::vector<std::string>* errors) {
+  // One worker's time limit covers its chunk: the per-test limit times its tests.
+  size_t largest = 1;
+  for (const Chunk& c : chunks) largest = std::max(largest, c.count);
   WorkerLimits limits = options.limits;
   limits.timeout_ms = static_cast<int>(std::min<int64_t>(
-      static_cast<int64_t>(limits.timeout_ms) * static_cast<int64_t>(count), 24 * 3600 * 1000));
-  std::string payload;
-  const WorkerStatus status = RunInWorker(limits, job, &payload, error);
-  if (status == WorkerStatus::JobFailed) {
-    // The context could not be created: every test of the chunk fails with the reason.
-    for (size_t i = first; i < first + count; ++i) {
-      (*results)[i].path = paths[i];
-      (*results)[i].message = fmt::format("{}: {}", paths[i], *error);
-      (*results)[i].environment = true;
+      static_cast<int64_t>(limits.timeout_ms) * static_cast<int64_t>(largest), 24 * 3600 * 1000));
+  std::vector<WorkerResult> outcomes;
+  RunInWorkers(
+      limits, chunks.size(), static_cast<size_t>(std::max(1, options.jobs)),
+      [&](size_t i) { return ChunkJob(paths, chunks[i], options); }, &outcomes);
+  std::vector<Chunk> failed;
+  errors->clear();
+  for (size_t c = 0; c < chunks.size(); ++c) {
+    const Chunk& chunk = chunks[c];
+    const WorkerResult& outcome = outcomes[c];
+    if (outcome.status == WorkerStatus::JobFailed) {
+      // No GL context: every test of the chunk fails with the reason.
+      for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+        (*results)[i].path = paths[i];
+        (*results)[i].message = fmt::format("{}: {}", paths[i], outcome.error);
+        (*results)[i].environment = true;
+      }
+      continue;
     }
-    return true;
+    nlohmann::json json;
+    if (outcome.status == WorkerStatus::Ok) {
+      json = nlohmann::json::parse(outcome.payload, nullptr, /*allow_exceptions=*/false);
+    }
+    if (!json.is_array() || json.size() != chunk.count) {
+      failed.push_back(chunk);
+      errors->push_back(outcome.status == WorkerStatus::Ok
+                            ? "the worker's answer is not the expected JSON"
+                            : outcome.error);
+      continue;
+    }
+    for (size_t i = 0; i < chunk.count; ++i) {
+      (*results)[chunk.first + i] = FromJson(paths[chunk.first + i], json[i]);
+    }
   }
-  if (status != WorkerStatus::Ok) return false;
-  nlohmann::json json = nlohmann::json::parse(payload, nullptr, /*allow_exceptions=*/false);
-  if (!json.is_array() || json.size() != count) {
-    *error = "the worker's answer is not the expected JSON";
-    return false;
-  }
-  for (size_t i = 0; i < count; ++i) (*results)[first + i] = FromJson(paths[first + i], json[i]);
-  return true;
+  return failed;
 }
 
 }  // namespace
@@ -213,28 +240,30 @@ std::vector<ShaderTestResult> RunShaderTests(const std::vector<std::string>& pat
   if (paths.empty()) return results;
   const size_t jobs = static_cast<size_t>(std::max(1, options.jobs));
   // Chunks small enough to balance the workers, large enough to share a context start.
-  const size_t chunk = std::clamp<size_t>(paths.size() / (jobs * 4), 1, 16);
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    while (true) {
-      const size_t first = next.fetch_add(chunk);
-      if (first >= paths.size()) return;
-      const size_t count = std::min(chunk, paths.size() - first);
-      std::string error;
-      if (RunChunk(paths, first, count, options, &results, &error)) continue;
-      // Find the guilty test: each alone.
-      for (size_t i = first; i < first + count; ++i) {
-        if (count > 1 && RunChunk(paths, i, 1, options, &results, &error)) continue;
-        results[i] = ShaderTestResult{};
-        results[i].path = paths[i];
-        results[i].message = fmt::format("{}: {}", paths[i], error);
-      }
+  const size_t size = std::clamp<size_t>(paths.size() / (jobs * 4), 1, 16);
+  std::vector<Chunk> chunks;
+  for (size_t first = 0; first < paths.size(); first += size) {
+    chunks.push_back({first, std::min(size, paths.size() - first)});
+  }
+  std::vector<std::string> errors;
+  std::vector<Chunk> failed = RunChunks(paths, chunks, options, &results, &errors);
+  // A worker that died took its whole chunk: each of its tests again alone, so that only
+  // the guilty one fails.
+  std::vector<Chunk> singles;
+  for (size_t f = 0; f < failed.size(); ++f) {
+    for (size_t i = failed[f].first; i < failed[f].first + failed[f].count; ++i) {
+      singles.push_back({i, 1});
     }
-  };
-  std::vector<std::thread> threads;
-  for (size_t t = 1; t < std::min(jobs, paths.size()); ++t) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
+  }
+  if (!singles.empty()) {
+    std::vector<Chunk> guilty = RunChunks(paths, singles, options, &results, &errors);
+    for (size_t g = 0; g < guilty.size(); ++g) {
+      ShaderTestResult& r = results[guilty[g].first];
+      r = ShaderTestResult{};
+      r.path = paths[guilty[g].first];
+      r.message = fmt::format("{}: {}", r.path, errors[g]);
+    }
+  }
   return results;
 }
 

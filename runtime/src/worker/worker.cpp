@@ -11,11 +11,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <new>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #if defined(__SANITIZE_ADDRESS__)
 #define ARBITER_SANITIZED 1
@@ -98,61 +101,69 @@ bool Reap(pid_t pid, Clock::time_point deadline, int* wait_status) {
   }
 }
 
-}  // namespace
+// One running child: its pid, the read end of its pipe, its deadline and what it said.
+struct Child {
+  pid_t pid = -1;
+  int fd = -1;
+  Clock::time_point deadline;
+  std::string answer;
+  bool timed_out = false;
+};
 
-WorkerStatus RunInWorker(const WorkerLimits& limits, const WorkerJob& job, std::string* payload,
-                         std::string* error) {
-  payload->clear();
+// Forks a child running `job`; false (with `error`) when none could be started.
+bool Spawn(const WorkerLimits& limits, const WorkerJob& job, Child* child, std::string* error) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) {
     *error = fmt::format("cannot create a pipe for the worker: {}", strerror(errno));
-    return WorkerStatus::SpawnFailed;
+    return false;
   }
   pid_t pid = fork();
   if (pid < 0) {
     *error = fmt::format("cannot start a worker process: {}", strerror(errno));
     close(fds[0]);
     close(fds[1]);
-    return WorkerStatus::SpawnFailed;
+    return false;
   }
   if (pid == 0) {
     close(fds[0]);
     RunChild(fds[1], limits, job);
   }
   close(fds[1]);
+  *child = Child{};
+  child->pid = pid;
+  child->fd = fds[0];
+  child->deadline = Clock::now() + std::chrono::milliseconds(limits.timeout_ms);
+  return true;
+}
 
-  const auto deadline = Clock::now() + std::chrono::milliseconds(limits.timeout_ms);
-  std::string answer;
-  bool timed_out = false;
+// Reads what the child has written; false once its answer is complete (end of file, an
+// error, or the deadline passed).
+bool Pump(Child* child) {
   char buffer[65536];
   while (true) {
-    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-    if (left.count() <= 0) {
-      timed_out = true;
-      break;
-    }
-    pollfd p{fds[0], POLLIN, 0};
-    int ready = poll(&p, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) {
-      timed_out = ready == 0;
-      break;
-    }
-    ssize_t n = read(fds[0], buffer, sizeof buffer);
+    ssize_t n = read(child->fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // end of the answer: the child closed its end
-    answer.append(buffer, static_cast<size_t>(n));
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return true;
+    if (n <= 0) return false;  // end of the answer: the child closed its end
+    child->answer.append(buffer, static_cast<size_t>(n));
+    if (static_cast<size_t>(n) < sizeof buffer) return true;
   }
-  close(fds[0]);
+}
 
+// Closes the pipe, reaps the child and turns its end into a status.
+WorkerStatus Finish(const WorkerLimits& limits, Child* child, std::string* payload,
+                    std::string* error) {
+  close(child->fd);
   int wait_status = 0;
-  if (timed_out || !Reap(pid, deadline + std::chrono::seconds(5), &wait_status)) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &wait_status, 0);
+  if (child->timed_out ||
+      !Reap(child->pid, child->deadline + std::chrono::seconds(5), &wait_status)) {
+    kill(child->pid, SIGKILL);
+    waitpid(child->pid, &wait_status, 0);
     *error = fmt::format("the worker ran past its time limit of {} ms and was stopped",
                          limits.timeout_ms);
     return WorkerStatus::TimedOut;
   }
+  const std::string& answer = child->answer;
   if (answer.empty() || !WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
     *error = Describe(wait_status);
     return WorkerStatus::Crashed;
@@ -168,6 +179,65 @@ WorkerStatus RunInWorker(const WorkerLimits& limits, const WorkerJob& job, std::
     default:
       *error = answer.substr(1);
       return WorkerStatus::JobFailed;
+  }
+}
+
+}  // namespace
+
+WorkerStatus RunInWorker(const WorkerLimits& limits, const WorkerJob& job, std::string* payload,
+                         std::string* error) {
+  std::vector<WorkerResult> results;
+  RunInWorkers(
+      limits, 1, 1, [&](size_t) { return job; }, &results);
+  *payload = std::move(results[0].payload);
+  *error = std::move(results[0].error);
+  return results[0].status;
+}
+
+void RunInWorkers(const WorkerLimits& limits, size_t count, size_t parallel,
+                  const std::function<WorkerJob(size_t)>& make_job,
+                  std::vector<WorkerResult>* results) {
+  results->assign(count, WorkerResult{});
+  parallel = std::max<size_t>(parallel, 1);
+  std::vector<std::pair<size_t, Child>> running;
+  size_t next = 0;
+  while (next < count || !running.empty()) {
+    while (next < count && running.size() < parallel) {
+      Child child;
+      WorkerResult& r = (*results)[next];
+      if (Spawn(limits, make_job(next), &child, &r.error)) {
+        fcntl(child.fd, F_SETFL, O_NONBLOCK);
+        running.emplace_back(next, std::move(child));
+      } else {
+        r.status = WorkerStatus::SpawnFailed;
+      }
+      ++next;
+    }
+    if (running.empty()) continue;
+    // Wait for an answer or the nearest deadline.
+    std::vector<pollfd> fds;
+    Clock::time_point nearest = running[0].second.deadline;
+    for (const auto& [index, child] : running) {
+      fds.push_back(pollfd{child.fd, POLLIN, 0});
+      nearest = std::min(nearest, child.deadline);
+    }
+    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(nearest - Clock::now());
+    int ready = poll(fds.data(), fds.size(), static_cast<int>(std::max<int64_t>(left.count(), 0)));
+    if (ready < 0 && errno != EINTR) ready = 0;
+    const Clock::time_point now = Clock::now();
+    for (size_t i = running.size(); i-- > 0;) {
+      Child& child = running[i].second;
+      bool done = false;
+      if (fds[i].revents != 0) done = !Pump(&child);
+      if (!done && now >= child.deadline) {
+        child.timed_out = true;
+        done = true;
+      }
+      if (!done) continue;
+      WorkerResult& r = (*results)[running[i].first];
+      r.status = Finish(limits, &child, &r.payload, &r.error);
+      running.erase(running.begin() + static_cast<std::ptrdiff_t>(i));
+    }
   }
 }
 

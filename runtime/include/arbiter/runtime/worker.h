@@ -40,6 +40,20 @@ using WorkerJob = std::function<bool(std::string* payload, std::string* error)>;
 WorkerStatus RunInWorker(const WorkerLimits& limits, const WorkerJob& job, std::string* payload,
                          std::string* error);
 
+struct WorkerResult {
+  WorkerStatus status = WorkerStatus::SpawnFailed;
+  std::string payload;  // when Ok
+  std::string error;    // otherwise
+};
+
+// Runs `count` jobs (make_job(i) gives job i), each in its own child process, at most
+// `parallel` at a time, each with `limits`. Every child is forked from the calling thread
+// (forking while other threads allocate can deadlock the child under a sanitizer's
+// allocator), so callers get parallel workers without threads. Results in job order.
+void RunInWorkers(const WorkerLimits& limits, size_t count, size_t parallel,
+                  const std::function<WorkerJob(size_t)>& make_job,
+                  std::vector<WorkerResult>* results);
+
 // ArbExecutor::Run in a worker process: creates the executor there, runs, and carries the
 // results back. Returns Ok and fills `results`, or another status with `error` set.
 WorkerStatus RunArbInWorker(const ExecOptions& options, const WorkerLimits& limits,
