@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "arbiter/compiler/source.h"
@@ -23,6 +24,7 @@ struct RunCommandOptions {
   std::string backend = "osmesa";
   std::string driver = "softpipe";
   int jobs = 0;
+  std::string format = "text";
   std::string junit;
   std::string png;
   int timeout_ms = 60000;
@@ -84,6 +86,26 @@ void PrintResult(const runtime::ShaderTestResult& r) {
   fmt::print("{}", out);
 }
 
+// One test in `--format json`: the text report's content, the message split into lines.
+nlohmann::ordered_json ResultJson(const runtime::ShaderTestResult& r) {
+  nlohmann::ordered_json j;
+  j["file"] = r.path;
+  j["status"] = std::string(runtime::TestStatusName(r.status));
+  std::vector<std::string> message;
+  size_t pos = 0;
+  while (pos < r.message.size()) {
+    size_t end = r.message.find('\n', pos);
+    if (end == std::string::npos) end = r.message.size();
+    message.push_back(r.message.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  j["message"] = message;
+  j["diagnostics"] = r.diagnostics;
+  j["warnings"] = r.warnings;
+  if (!r.png.empty()) j["png"] = r.png;
+  return j;
+}
+
 int RunTests(const RunCommandOptions& options) {
   runtime::RunOptions run;
   if (!runtime::ParseBackend(options.backend, &run.exec.backend)) {
@@ -115,13 +137,28 @@ int RunTests(const RunCommandOptions& options) {
   const std::vector<runtime::ShaderTestResult> results = runtime::RunShaderTests(paths, run);
   size_t passed = 0, failed = 0, skipped = 0;
   for (const runtime::ShaderTestResult& r : results) {
-    PrintResult(r);
     passed += r.status == runtime::TestStatus::Pass ? 1 : 0;
     failed += r.status == runtime::TestStatus::Fail ? 1 : 0;
     skipped += r.status == runtime::TestStatus::Skip ? 1 : 0;
   }
-  fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,
-             options.driver, options.backend, options.translate ? ", ARB translated to GLSL" : "");
+  if (options.format == "json") {
+    nlohmann::ordered_json j;
+    j["driver"] = options.driver;
+    j["backend"] = options.backend;
+    j["translate"] = options.translate;
+    nlohmann::ordered_json tests = nlohmann::ordered_json::array();
+    for (const runtime::ShaderTestResult& r : results) tests.push_back(ResultJson(r));
+    j["tests"] = std::move(tests);
+    j["passed"] = passed;
+    j["failed"] = failed;
+    j["skipped"] = skipped;
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    for (const runtime::ShaderTestResult& r : results) PrintResult(r);
+    fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,
+               options.driver, options.backend,
+               options.translate ? ", ARB translated to GLSL" : "");
+  }
   if (failed > 0) exit = Worse(exit, Exit::Rejected);
   for (const runtime::ShaderTestResult& r : results) {
     if (r.environment) exit = Worse(exit, Exit::Environment);
@@ -157,6 +194,8 @@ std::function<int()> AddRunCommand(CLI::App* app) {
       ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
   cmd->add_option("-j,--jobs", options->jobs, "worker processes (default: one per core)")
       ->check(CLI::Range(0, 256));
+  cmd->add_option("--format", options->format, "output format")
+      ->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("--junit", options->junit, "also write the results as JUnit XML to this file");
   cmd->add_option("--png", options->png, "save each test's picture as PNG under this folder");
   cmd->add_option("--timeout", options->timeout_ms, "time limit per test, ms")

@@ -6,6 +6,7 @@ write what they promise, and the output does not depend on -j.
 
   runner_test.py ARBITER
 """
+import json
 import os
 import struct
 import subprocess
@@ -197,6 +198,16 @@ def main():
         check("png size", (width, height) == (250, 250), f"{width}x{height}")
         check("png pixels", rows[0][0:4] == b"\xff\x00\x00\xff" and
               rows[249][249 * 4:250 * 4] == b"\x00\x00\xff\xff", repr(rows[0][0:8]))
+
+        # --format json: the same results, machine-readable.
+        code, out, _ = run(["--format", "json", "pass.shader_test", "probe-fails.shader_test",
+                            "skip-glsl.shader_test"], tmp)
+        report = json.loads(out)
+        check("json counts", (report["passed"], report["failed"], report["skipped"]) == (1, 1, 1),
+              out)
+        check("json tests", [t["status"] for t in report["tests"]] == ["PASS", "FAIL", "SKIP"] and
+              report["tests"][1]["message"][1].strip() ==
+              "Expected: 0.000000 1.000000 0.000000 1.000000", out)
 
         # The output does not depend on the number of workers.
         names = sorted(n for n in CASES if n != "glsl-hang.shader_test")
