@@ -66,6 +66,19 @@ bool ExpandTests(const std::vector<std::string>& args, std::vector<std::string>*
   return ok;
 }
 
+// The lines of a result's message (which holds one line per failing probe or error).
+std::vector<std::string> MessageLines(const std::string& message) {
+  std::vector<std::string> lines;
+  size_t pos = 0;
+  while (pos < message.size()) {
+    size_t end = message.find('\n', pos);
+    if (end == std::string::npos) end = message.size();
+    lines.push_back(message.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  return lines;
+}
+
 void PrintResult(const runtime::ShaderTestResult& r) {
   std::string out;
   const std::string_view status = runtime::TestStatusName(r.status);
@@ -73,13 +86,7 @@ void PrintResult(const runtime::ShaderTestResult& r) {
     out = fmt::format("PASS {}\n", r.path);
   } else {
     out = fmt::format("{} {}\n", status, r.path);
-    size_t pos = 0;
-    while (pos < r.message.size()) {
-      size_t end = r.message.find('\n', pos);
-      if (end == std::string::npos) end = r.message.size();
-      out += fmt::format("  {}\n", r.message.substr(pos, end - pos));
-      pos = end + 1;
-    }
+    for (const std::string& line : MessageLines(r.message)) out += fmt::format("  {}\n", line);
     for (const std::string& d : r.diagnostics) out += fmt::format("  {}\n", d);
   }
   for (const std::string& w : r.warnings) out += fmt::format("  warning: {}\n", w);
@@ -91,15 +98,7 @@ nlohmann::ordered_json ResultJson(const runtime::ShaderTestResult& r) {
   nlohmann::ordered_json j;
   j["file"] = r.path;
   j["status"] = std::string(runtime::TestStatusName(r.status));
-  std::vector<std::string> message;
-  size_t pos = 0;
-  while (pos < r.message.size()) {
-    size_t end = r.message.find('\n', pos);
-    if (end == std::string::npos) end = r.message.size();
-    message.push_back(r.message.substr(pos, end - pos));
-    pos = end + 1;
-  }
-  j["message"] = message;
+  j["message"] = MessageLines(r.message);
   j["diagnostics"] = r.diagnostics;
   j["warnings"] = r.warnings;
   if (!r.png.empty()) j["png"] = r.png;

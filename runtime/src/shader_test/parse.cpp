@@ -75,7 +75,7 @@ std::string_view TestStatusName(TestStatus status) {
   return "FAIL";
 }
 
-bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test,
+bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, int* error_line,
                      std::string* error) {
   *test = ShaderTest{};
   test->path = std::move(path);
@@ -98,7 +98,8 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test,
         if (s.name == name) section = s.section;
       }
       if (section == Section::None) {
-        *error = fmt::format("line {}: unknown section [{}]", number, name);
+        *error_line = number;
+        *error = fmt::format("unknown section [{}]", name);
         return false;
       }
       const auto index = static_cast<size_t>(section);
@@ -107,7 +108,8 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test,
       const bool repeatable =
           section == Section::VertexShader || section == Section::FragmentShader;
       if (seen[index] && !repeatable) {
-        *error = fmt::format("line {}: section [{}] appears twice", number, name);
+        *error_line = number;
+        *error = fmt::format("section [{}] appears twice", name);
         return false;
       }
       seen[index] = true;
@@ -133,7 +135,8 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test,
         break;
       case Section::VertexPassthrough:
         if (Meaningful(raw, &content)) {
-          *error = fmt::format("line {}: [vertex shader passthrough] takes no text", number);
+          *error_line = number;
+          *error = "[vertex shader passthrough] takes no text";
           return false;
         }
         break;
@@ -146,8 +149,8 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test,
     }
   }
   if (test->vertex_passthrough && !test->vertex_shaders.empty()) {
-    *error = fmt::format("line {}: [vertex shader passthrough] and [vertex shader] together",
-                         test->passthrough_line);
+    *error_line = test->passthrough_line;
+    *error = "[vertex shader passthrough] and [vertex shader] together";
     return false;
   }
   return true;

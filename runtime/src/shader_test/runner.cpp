@@ -104,8 +104,9 @@ class Runner {
       result.message = fmt::format("{}: cannot read the test: {}", path, error);
       return result;
     }
-    if (!ParseShaderTest(bytes, path, &test, &error)) {
-      result.message = fmt::format("{}:{}", path, error.substr(5));  // "line N: ..." -> "N: ..."
+    int error_line = 0;
+    if (!ParseShaderTest(bytes, path, &test, &error_line, &error)) {
+      result.message = fmt::format("{}:{}: {}", path, error_line, error);
       return result;
     }
     if (!Session::WindowSize(test, &width, &height, &error)) {

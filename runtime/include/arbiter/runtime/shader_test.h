@@ -42,9 +42,11 @@ struct ShaderTest {
   std::vector<ShaderTestLine> commands;     // [test], comments and blank lines removed
 };
 
-// Splits `text` into sections. On a malformed file (text before the first section, an
-// unknown or repeated section) returns false with `error` as "line N: reason".
-bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, std::string* error);
+// Splits `text` into sections. On a malformed file (an unknown or repeated section, text in
+// [vertex shader passthrough]) returns false with the line in `error_line` and the reason in
+// `error`. Text before the first section is ignored, as piglit ignores it.
+bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, int* error_line,
+                     std::string* error);
 
 enum class TestStatus : uint8_t {
   Pass,
