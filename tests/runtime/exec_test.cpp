@@ -941,6 +941,38 @@ TEST_F(ExecTest, RunsOneAfterAnotherStartFromTheModel) {
   EXPECT_TRUE(Run(vp, "", Inputs(0)).empty());
 }
 
+// The executor keeps compiled programs between runs (by their text): a program run again
+// must still see only the new run's parameters, on both engines.
+TEST_F(ExecTest, ARerunProgramSeesOnlyTheNewParameters) {
+  const std::string vp =
+      "!!ARBvp1.0\nMOV result.texcoord[0], program.local[3];\n"
+      "MOV result.texcoord[1], program.env[2];\nEND\n";
+  std::unique_ptr<arbvp::Program> program = Parse(vp);
+  arbvp::ExecInputs set = Inputs(1);
+  set.vertex_params.local[3] = {1.0f, 2.0f, 3.0f, 4.0f};
+  set.vertex_params.env[2] = {5.0f, 6.0f, 7.0f, 8.0f};
+  const arbvp::ExecInputs none = Inputs(1);
+  const arbvp::ExecInputs* given_inputs = &set;
+  for (bool translated : {false, true}) {
+    SCOPED_TRACE(translated ? "mesa-glsl" : "mesa-arb");
+    for (const arbvp::ExecInputs* inputs : {given_inputs, &none, given_inputs}) {
+      std::vector<arbvp::VectorResult> results;
+      std::string error;
+      const bool ok = translated
+                          ? executor_->RunTranslated({program.get(), nullptr}, arbvp::EmitOptions{},
+                                                     *inputs, &results, &error)
+                          : executor_->Run({program.get(), nullptr}, *inputs, &results, &error);
+      ASSERT_TRUE(ok) << error;
+      ASSERT_EQ(results.size(), 1u);
+      const bool given = inputs == given_inputs;
+      EXPECT_TRUE(Value(results[0], "result.texcoord[0]",
+                        given ? Vec4{1.0f, 2.0f, 3.0f, 4.0f} : Vec4{0.0f, 0.0f, 0.0f, 0.0f}));
+      EXPECT_TRUE(Value(results[0], "result.texcoord[1]",
+                        given ? Vec4{5.0f, 6.0f, 7.0f, 8.0f} : Vec4{0.0f, 0.0f, 0.0f, 0.0f}));
+    }
+  }
+}
+
 TEST_F(ExecTest, ErrorsAreReported) {
   arbvp::ExecInputs in = Inputs(1);
   in.textures[0] = Texture(arbvp::TexDim::Tex2D, 2, 2, 1);

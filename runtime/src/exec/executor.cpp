@@ -12,6 +12,7 @@
 #include "exec/draw.h"
 #include "exec/exec_gl.h"
 #include "exec/framebuffer.h"
+#include "exec/program_cache.h"
 #include "exec/program_rewrite.h"
 #include "exec/state_upload.h"
 #include "exec/textures.h"
@@ -80,7 +81,8 @@ class MesaArbExecutor final : public ArbExecutor {
       return false;
     }
     DrainErrors(gl_);
-    bool ok = exec::RunGlslTranslation(gl_, limits_, programs, emit, inputs, results, error);
+    bool ok = exec::RunGlslTranslation(gl_, limits_, programs, emit, inputs, &glsl_cache_, results,
+                                       error);
     DrainErrors(gl_);
     context_->Release();
     return ok;
@@ -156,6 +158,24 @@ class MesaArbExecutor final : public ArbExecutor {
     gl_.Disable(GL_FOG);
   }
 
+  // Binds the program compiled from `text`, from the cache or loaded now.
+  bool BindProgram(GLenum target, const std::string& text, std::string* error) {
+    const std::string key = (target == GL_VERTEX_PROGRAM_ARB ? "v" : "f") + text;
+    GLuint id = cache_.Find(key);
+    if (id != 0) {
+      gl_.BindProgramARB(target, id);
+      return true;
+    }
+    if (!LoadProgram(target, text, &id, error)) {
+      gl_.BindProgramARB(target, 0);
+      gl_.DeleteProgramsARB(1, &id);
+      return false;
+    }
+    const GLuint evicted = cache_.Add(key, id);
+    if (evicted != 0) gl_.DeleteProgramsARB(1, &evicted);
+    return true;
+  }
+
   // Loads one program; on rejection says why, with the line of the rewritten text.
   bool LoadProgram(GLenum target, const std::string& text, GLuint* id, std::string* error) {
     gl_.GenProgramsARB(1, id);
@@ -181,12 +201,11 @@ class MesaArbExecutor final : public ArbExecutor {
                const arbvp::ExecInputs& inputs, int width, int height,
                exec::Framebuffer* framebuffer, std::vector<std::vector<float>>* values,
                std::vector<float>* alive, std::string* error) {
-    GLuint ids[2] = {0, 0};
-    bool ok = LoadProgram(GL_VERTEX_PROGRAM_ARB, pass.vertex_text, &ids[0], error);
+    bool ok = BindProgram(GL_VERTEX_PROGRAM_ARB, pass.vertex_text, error);
     if (ok && programs.vertex != nullptr) {
       exec::UploadLocalParameters(gl_, GL_VERTEX_PROGRAM_ARB, inputs.vertex_params.local);
     }
-    ok = ok && LoadProgram(GL_FRAGMENT_PROGRAM_ARB, pass.fragment_text, &ids[1], error);
+    ok = ok && BindProgram(GL_FRAGMENT_PROGRAM_ARB, pass.fragment_text, error);
     if (ok && programs.fragment != nullptr) {
       exec::UploadLocalParameters(gl_, GL_FRAGMENT_PROGRAM_ARB, inputs.fragment_params.local);
     }
@@ -205,7 +224,6 @@ class MesaArbExecutor final : public ArbExecutor {
     }
     gl_.BindProgramARB(GL_VERTEX_PROGRAM_ARB, 0);
     gl_.BindProgramARB(GL_FRAGMENT_PROGRAM_ARB, 0);
-    gl_.DeleteProgramsARB(2, ids);
     return ok;
   }
 
@@ -213,6 +231,9 @@ class MesaArbExecutor final : public ArbExecutor {
   ExecGl gl_;
   std::string description_;
   exec::ContextLimits limits_;
+  // The rewritten programs of the last few runs (a program, its passes, a pair's two).
+  exec::ProgramCache cache_{8};
+  exec::GlslCache glsl_cache_;
 };
 
 bool HasExtension(const std::string& extensions, const std::string& name) {

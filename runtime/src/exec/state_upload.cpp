@@ -92,8 +92,13 @@ void UploadEnvParameters(const ExecGl& gl, GLenum target, const std::map<int, ar
 
 void UploadLocalParameters(const ExecGl& gl, GLenum target,
                            const std::map<int, arbvp::Vec4>& local) {
-  for (const auto& [index, value] : local) {
-    gl.ProgramLocalParameter4fvARB(target, static_cast<GLuint>(index), value.data());
+  // Every index, zero where `local` has none: a program reused from the cache keeps the
+  // values of its previous run.
+  const arbvp::Vec4 zero{0.0f, 0.0f, 0.0f, 0.0f};
+  for (int i = 0; i < arbvp::kMaxProgramParams; ++i) {
+    auto it = local.find(i);
+    gl.ProgramLocalParameter4fvARB(target, static_cast<GLuint>(i),
+                                   (it != local.end() ? it->second : zero).data());
   }
 }
 

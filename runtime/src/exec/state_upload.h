@@ -15,7 +15,7 @@ void UploadGlState(const ExecGl& gl, const arbvp::GlState& state);
 // env parameters outlive a run).
 void UploadEnvParameters(const ExecGl& gl, GLenum target, const std::map<int, arbvp::Vec4>& env);
 
-// Sets the bound program's local parameters.
+// Sets every local parameter of the bound program: those of `local`, zero elsewhere.
 void UploadLocalParameters(const ExecGl& gl, GLenum target,
                            const std::map<int, arbvp::Vec4>& local);
 

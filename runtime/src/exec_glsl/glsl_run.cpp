@@ -52,17 +52,61 @@ uint8_t GlslComponents(const arbvp::Binding& b) {
   }
 }
 
+// The translation of `programs` with glslang's verdict, the cached one for the same text.
+CheckedTranslation Translate(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                             GlslCache* cache) {
+  CheckedTranslation t =
+      EmitTranslation(programs.vertex, programs.fragment, emit, nullptr, nullptr);
+  if (!t.error.empty()) return t;
+  if (cache->checked && cache->vertex == t.vertex && cache->fragment == t.fragment) {
+    t.ok = cache->ok;
+    t.error = cache->error;
+    return t;
+  }
+  SelfCheckTranslation(&t);
+  cache->checked = true;
+  cache->vertex = t.vertex;
+  cache->fragment = t.fragment;
+  cache->ok = t.ok;
+  cache->error = t.error;
+  return t;
+}
+
+// What decides a linked program: both texts and the attribute locations bound before
+// linking (LinkGlslPass).
+std::string LinkKey(const GlslPass& pass, const arbvp::BindingMap& map, const RunPlan& plan) {
+  std::string key = pass.vertex + '\0' + pass.fragment + '\0';
+  key += fmt::format("{} {}", static_cast<int>(plan.mode), plan.position_attrib);
+  for (const arbvp::AttributeBinding& a : map.attributes) {
+    key += fmt::format(" {}={}", a.name, a.location);
+  }
+  return key;
+}
+
 struct Run {
   const ExecGl& gl;
   const RunPlan& plan;
   const CheckedTranslation& translation;
   const ArbPrograms& programs;
   const arbvp::ExecInputs& inputs;
+  ProgramCache* cache;
+
+  // The linked program of `pass`, from the cache or linked now.
+  GLuint Link(const GlslPass& pass, std::string* error) const {
+    std::string key = LinkKey(pass, translation.bindings, plan);
+    GLuint program = cache->Find(key);
+    if (program != 0) return program;
+    program = LinkGlslPass(gl, pass, translation.bindings, plan, error);
+    if (program == 0) return 0;
+    const GLuint evicted = cache->Add(std::move(key), program);
+    if (evicted != 0) gl.DeleteProgram(evicted);
+    return program;
+  }
 
   bool Pass(const GlslPass& pass, int width, int height, Framebuffer* framebuffer,
             std::vector<std::vector<float>>* values, std::vector<float>* alive,
             std::string* error) const {
-    const GLuint program = LinkGlslPass(gl, pass, translation.bindings, plan, error);
+    const GLuint program = Link(pass, error);
     if (program == 0) return false;
     gl.UseProgram(program);
     bool ok = SetGlslUniforms(gl, program, translation.bindings, programs, inputs, error) &&
@@ -84,7 +128,6 @@ struct Run {
       ok = Check(gl, "reading the framebuffer back", error);
     }
     gl.UseProgram(0);
-    gl.DeleteProgram(program);
     return ok;
   }
 };
@@ -93,12 +136,12 @@ struct Run {
 
 bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const ArbPrograms& programs,
                         const arbvp::EmitOptions& emit, const arbvp::ExecInputs& inputs,
-                        std::vector<arbvp::VectorResult>* results, std::string* error) {
+                        GlslCache* cache, std::vector<arbvp::VectorResult>* results,
+                        std::string* error) {
   results->clear();
   RunPlan plan;
   if (!PlanRun(programs, limits, &plan, error)) return false;
-  const CheckedTranslation translation =
-      TranslateChecked(programs.vertex, programs.fragment, emit, nullptr, nullptr);
+  const CheckedTranslation translation = Translate(programs, emit, cache);
   if (!translation.ok) {
     *error = "the translation failed its self-check: " + translation.error;
     return false;
@@ -128,7 +171,7 @@ bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const Arb
          Check(gl, "creating the framebuffer", error);
     std::vector<std::vector<float>> values(plan.outputs.size());
     std::vector<float> alive;
-    const Run run{gl, plan, translation, programs, inputs};
+    const Run run{gl, plan, translation, programs, inputs, &cache->programs};
     for (size_t p = 0; ok && p < passes.size(); ++p) {
       ok = run.Pass(passes[p], width, height, &framebuffer, &values, &alive, error);
     }

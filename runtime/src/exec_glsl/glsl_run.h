@@ -9,9 +9,22 @@
 #include "arbiter/arbvp/exec.h"
 #include "arbiter/runtime/exec.h"
 #include "exec/exec_gl.h"
+#include "exec/program_cache.h"
 #include "exec/program_rewrite.h"
 
 namespace arbiter::runtime::exec {
+
+// What the engine keeps between runs on one context: glslang's verdict on the last
+// translation (the same text gets the same verdict) and the linked programs of the last
+// few passes.
+struct GlslCache {
+  std::string vertex;  // the last translation self-checked
+  std::string fragment;
+  bool checked = false;
+  bool ok = false;
+  std::string error;
+  ProgramCache programs{8};
+};
 
 // Translates `programs` (with the glslang self-check), adapts the shaders for readback
 // (glsl_adapt.h) and runs them on `inputs` in the current context. Results as
@@ -20,7 +33,7 @@ namespace arbiter::runtime::exec {
 // component of them.
 [[nodiscard]] bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits,
                                       const ArbPrograms& programs, const arbvp::EmitOptions& emit,
-                                      const arbvp::ExecInputs& inputs,
+                                      const arbvp::ExecInputs& inputs, GlslCache* cache,
                                       std::vector<arbvp::VectorResult>* results,
                                       std::string* error);
 

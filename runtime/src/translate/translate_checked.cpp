@@ -1,4 +1,5 @@
-// TranslateChecked: emit, then compile (and link) the GLSL with glslang in process.
+// TranslateChecked: emit (EmitTranslation), then compile (and link) the GLSL with glslang
+// in process (SelfCheckTranslation).
 #include <fmt/format.h>
 
 #include "arbiter/glsl/check.h"
@@ -20,10 +21,10 @@ std::string FirstError(const compiler::DiagnosticSink& sink) {
 
 }  // namespace
 
-CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::Program* fragment,
-                                    const arbvp::EmitOptions& options,
-                                    const compiler::SourceFile* vertex_source,
-                                    const compiler::SourceFile* fragment_source) {
+CheckedTranslation EmitTranslation(const arbvp::Program* vertex, const arbvp::Program* fragment,
+                                   const arbvp::EmitOptions& options,
+                                   const compiler::SourceFile* vertex_source,
+                                   const compiler::SourceFile* fragment_source) {
   CheckedTranslation out;
   if (vertex && fragment) {
     arbvp::PairTranslation pair =
@@ -38,9 +39,15 @@ CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::P
     out.bindings = std::move(t.bindings);
   } else {
     out.error = "nothing to translate";
-    return out;
   }
+  return out;
+}
 
+void SelfCheckTranslation(CheckedTranslation* translation) {
+  CheckedTranslation& out = *translation;
+  if (!out.error.empty()) return;
+  const bool vertex = !out.vertex.empty();
+  const bool fragment = !out.fragment.empty();
   compiler::SourceFile vs("translation.vert", out.vertex);
   compiler::SourceFile fs("translation.frag", out.fragment);
   // Each shader alone (linked as a single shader, as `arbiter check` does), then the pair.
@@ -55,20 +62,29 @@ CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::P
     if (s.file->text().empty()) continue;
     compiler::DiagnosticSink sink(0);
     glsl::CheckOptions check;
-    check.link_as_program = s.stage == glsl::Stage::Vertex && vertex != nullptr;
+    check.link_as_program = s.stage == glsl::Stage::Vertex && vertex;
     if (!glsl::CheckShader(s.stage, {s.file}, check, &sink).ok) {
       out.error = fmt::format("the GLSL {} shader does not compile: {}", s.name, FirstError(sink));
-      return out;
+      return;
     }
   }
   if (vertex && fragment) {
     compiler::DiagnosticSink sink(0);
     if (!glsl::LinkProgram({&vs}, {&fs}, glsl::LinkOptions{}, &sink).ok) {
       out.error = fmt::format("the GLSL shaders do not link: {}", FirstError(sink));
-      return out;
+      return;
     }
   }
   out.ok = true;
+}
+
+CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::Program* fragment,
+                                    const arbvp::EmitOptions& options,
+                                    const compiler::SourceFile* vertex_source,
+                                    const compiler::SourceFile* fragment_source) {
+  CheckedTranslation out =
+      EmitTranslation(vertex, fragment, options, vertex_source, fragment_source);
+  SelfCheckTranslation(&out);
   return out;
 }
 

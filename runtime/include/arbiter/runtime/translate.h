@@ -28,4 +28,13 @@ CheckedTranslation TranslateChecked(const arbvp::Program* vertex, const arbvp::P
                                     const compiler::SourceFile* vertex_source,
                                     const compiler::SourceFile* fragment_source);
 
+// TranslateChecked's two halves, for callers that reuse a verdict for the same text: the
+// emitter's output (ok false; error set only when there is nothing to translate), and
+// glslang's verdict on it (sets ok, or error).
+CheckedTranslation EmitTranslation(const arbvp::Program* vertex, const arbvp::Program* fragment,
+                                   const arbvp::EmitOptions& options,
+                                   const compiler::SourceFile* vertex_source,
+                                   const compiler::SourceFile* fragment_source);
+void SelfCheckTranslation(CheckedTranslation* translation);
+
 }  // namespace arbiter::runtime
