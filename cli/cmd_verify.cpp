@@ -173,6 +173,7 @@ int RunVerify(const VerifyCommandOptions& options) {
     return static_cast<int>(Exit::Usage);
   }
   verify.exec.driver = options.driver;
+  verify.jobs = static_cast<int>(ResolveJobs(options.common));
   verify.limits.timeout_ms = options.timeout_ms;
   verify.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
   verify.generate.random_vectors = options.vectors;
@@ -271,6 +272,8 @@ std::function<int()> AddVerifyCommand(CLI::App* app) {
       ->check(CLI::IsMember({"auto", "always", "never"}));
   cmd->add_option("--stage", common.stage, "the kind of a program read from stdin")
       ->check(CLI::IsMember({"arbvp", "arbfp"}));
+  cmd->add_option("-j,--jobs", common.jobs, "worker processes (default: one per core)")
+      ->check(CLI::Range(0, 256));
   cmd->add_option("--timeout", options->timeout_ms,
                   "time limit of the Mesa engines, ms per program")
       ->check(CLI::Range(100, 3600000));

@@ -24,6 +24,13 @@ class GlContext {
 // shader cache) before any context exists.
 void SetMesaEnvironment(const std::string& driver);
 
+// Loads libOSMesa (with LLVM) into this process without creating a context, before worker
+// processes are forked: each worker then starts with the library loaded and relocated
+// instead of paying tens of milliseconds for it. Nothing of Mesa runs yet (no driver, no
+// threads a fork would lose). EGL has no counterpart: its driver loads when the display is
+// initialised, which starts driver threads.
+void PreloadOsMesa();
+
 // A compatibility-profile context; null (with `error` set) on failure.
 std::unique_ptr<GlContext> CreateOsMesaContext(std::string* error);
 std::unique_ptr<GlContext> CreateEglContext(std::string* error);

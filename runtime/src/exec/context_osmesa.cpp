@@ -47,6 +47,11 @@ void SetMesaEnvironment(const std::string& driver) {
   setenv("LIBGL_ALWAYS_SOFTWARE", "true", 1);
 }
 
+void PreloadOsMesa() {
+  std::string ignored;  // a worker that needs the library reports the error itself
+  LoadOsMesa(&ignored);
+}
+
 std::unique_ptr<GlContext> CreateOsMesaContext(std::string* error) {
   const OsMesaLibrary* lib = LoadOsMesa(error);
   if (lib == nullptr) return nullptr;

@@ -14,6 +14,7 @@
 #include "arbiter/runtime/shader_test.h"
 #include "exec/context.h"
 #include "shader_test/session.h"
+#include "worker/chunks.h"
 
 namespace arbiter::runtime {
 namespace {
@@ -162,25 +163,22 @@ ShaderTestResult FromJson(const std::string& path, const nlohmann::json& j) {
   return r;
 }
 
-// A chunk of tests for one worker: [first, first + count).
-struct Chunk {
-  size_t first = 0;
-  size_t count = 0;
-};
-
 // The job that runs one chunk on one GL context; its payload is a JSON array of results.
 WorkerJob ChunkJob(const std::vector<std::string>& paths, Chunk chunk, const RunOptions& options) {
   return [&paths, chunk, &options](std::string* payload, std::string* job_error) {
-    Runner runner;
-    if (!runner.Create(options, job_error)) return false;
+    auto runner = std::make_unique<Runner>();
+    if (!runner->Create(options, job_error)) return false;
     nlohmann::json out = nlohmann::json::array();
     for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
       const std::string png = options.png_dir.empty() || i >= options.png_names.size()
                                   ? ""
                                   : options.png_dir + "/" + options.png_names[i];
-      out.push_back(ToJson(runner.Run(paths[i], png, options)));
+      out.push_back(ToJson(runner->Run(paths[i], png, options)));
     }
     *payload = out.dump();
+    // The worker exits right after its job: the system frees the context faster than
+    // destroying it does.
+    (void)runner.release();
     return true;
   };
 }
@@ -191,16 +189,9 @@ std::vector<Chunk> RunChunks(const std::vector<std::string>& paths,
                              const std::vector<Chunk>& chunks, const RunOptions& options,
                              std::vector<ShaderTestResult>* results,
                              std::vector<std::string>* errors) {
-  // One worker's time limit covers its chunk: the per-test limit times its tests.
-  size_t largest = 1;
-  for (const Chunk& c : chunks) largest = std::max(largest, c.count);
-  WorkerLimits limits = options.limits;
-  limits.timeout_ms = static_cast<int>(std::min<int64_t>(
-      static_cast<int64_t>(limits.timeout_ms) * static_cast<int64_t>(largest), 24 * 3600 * 1000));
-  std::vector<WorkerResult> outcomes;
-  RunInWorkers(
-      limits, chunks.size(), static_cast<size_t>(std::max(1, options.jobs)),
-      [&](size_t i) { return ChunkJob(paths, chunks[i], options); }, &outcomes);
+  const std::vector<WorkerResult> outcomes =
+      RunChunksInWorkers(options.limits, chunks, static_cast<size_t>(std::max(1, options.jobs)),
+                         [&](const Chunk& chunk) { return ChunkJob(paths, chunk, options); });
   std::vector<Chunk> failed;
   errors->clear();
   for (size_t c = 0; c < chunks.size(); ++c) {
@@ -239,23 +230,15 @@ std::vector<ShaderTestResult> RunShaderTests(const std::vector<std::string>& pat
                                              const RunOptions& options) {
   std::vector<ShaderTestResult> results(paths.size());
   if (paths.empty()) return results;
+  if (options.exec.backend == Backend::OSMesa) exec::PreloadOsMesa();
   const size_t jobs = static_cast<size_t>(std::max(1, options.jobs));
-  // Chunks small enough to balance the workers, large enough to share a context start.
-  const size_t size = std::clamp<size_t>(paths.size() / (jobs * 4), 1, 16);
-  std::vector<Chunk> chunks;
-  for (size_t first = 0; first < paths.size(); first += size) {
-    chunks.push_back({first, std::min(size, paths.size() - first)});
-  }
+  // Small chunks: a test's cost varies with its draws, so many chunks balance the workers.
+  const std::vector<Chunk> chunks = PlanChunks(paths.size(), jobs, 4, 16);
   std::vector<std::string> errors;
   std::vector<Chunk> failed = RunChunks(paths, chunks, options, &results, &errors);
   // A worker that died took its whole chunk: each of its tests again alone, so that only
   // the guilty one fails.
-  std::vector<Chunk> singles;
-  for (size_t f = 0; f < failed.size(); ++f) {
-    for (size_t i = failed[f].first; i < failed[f].first + failed[f].count; ++i) {
-      singles.push_back({i, 1});
-    }
-  }
+  const std::vector<Chunk> singles = Singles(failed);
   if (!singles.empty()) {
     std::vector<Chunk> guilty = RunChunks(paths, singles, options, &results, &errors);
     for (size_t g = 0; g < guilty.size(); ++g) {

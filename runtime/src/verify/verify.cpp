@@ -1,5 +1,6 @@
-// arbiter verify's engine: inputs from the generator, the interpreter in process, both Mesa
-// engines in one worker, then the comparison (compare.cpp).
+// arbiter verify's engine: programs go to worker processes in chunks, -j at a time; a worker
+// makes one GL context and, per program, generates the inputs, runs the interpreter and both
+// Mesa engines and compares them (compare.cpp); only the verdicts come back.
 #include "arbiter/runtime/verify.h"
 
 #include <fmt/format.h>
@@ -11,6 +12,9 @@
 #include "arbiter/arbvp/deviations.h"
 #include "arbiter/arbvp/exec_io.h"
 #include "arbiter/arbvp/interpret.h"
+#include "exec/context.h"
+#include "verify/verdict_json.h"
+#include "worker/chunks.h"
 
 namespace arbiter::runtime {
 namespace {
@@ -19,100 +23,6 @@ struct Prepared {
   std::vector<arbvp::InputBatch> batches;
   std::vector<std::vector<arbvp::VectorResult>> ref;  // per batch
 };
-
-// What Mesa gave for one subject: per engine, results per batch, or an error.
-struct MesaRuns {
-  std::map<std::string, std::vector<std::vector<arbvp::VectorResult>>> results;
-  std::map<std::string, std::string> errors;
-};
-
-std::vector<std::string> MesaEngines(const VerifyOptions& options) {
-  std::vector<std::string> engines;
-  if (options.mesa_arb) engines.emplace_back(kEngineMesaArb);
-  if (options.mesa_glsl) engines.emplace_back(kEngineMesaGlsl);
-  return engines;
-}
-
-// Runs the Mesa engines of `subjects` (indices `which`) on one context; in JSON, one entry
-// per subject: {"mesa-arb": [batch results...] or {"error": ...}, "mesa-glsl": ...}.
-bool RunMesa(ArbExecutor* executor, const std::vector<VerifySubject>& subjects,
-             const std::vector<Prepared>& prepared, const std::vector<size_t>& which,
-             const VerifyOptions& options, nlohmann::ordered_json* out) {
-  *out = nlohmann::ordered_json::array();
-  for (size_t s : which) {
-    const VerifySubject& subject = subjects[s];
-    ArbPrograms programs{subject.vertex, subject.fragment};
-    nlohmann::ordered_json entry = nlohmann::ordered_json::object();
-    for (const std::string& engine : MesaEngines(options)) {
-      nlohmann::ordered_json batches = nlohmann::ordered_json::array();
-      std::string error;
-      for (const arbvp::InputBatch& batch : prepared[s].batches) {
-        std::vector<arbvp::VectorResult> results;
-        bool ok =
-            engine == kEngineMesaArb
-                ? executor->Run(programs, batch.inputs, &results, &error)
-                : executor->RunTranslated(programs, options.emit, batch.inputs, &results, &error);
-        if (!ok) break;
-        batches.push_back(arbvp::ResultsToJson(results, /*with_bindings=*/true));
-      }
-      if (!error.empty()) {
-        entry[engine] = nlohmann::ordered_json{{"error", error}};
-      } else {
-        entry[engine] = std::move(batches);
-      }
-    }
-    out->push_back(std::move(entry));
-  }
-  return true;
-}
-
-// Reads RunMesa's JSON for one subject.
-bool ReadMesa(const nlohmann::json& entry, MesaRuns* runs, std::string* error) {
-  for (const auto& [engine, value] : entry.items()) {
-    if (value.is_object()) {
-      runs->errors[engine] = value.value("error", std::string("no result"));
-      continue;
-    }
-    auto& batches = runs->results[engine];
-    for (const nlohmann::json& batch : value) {
-      batches.emplace_back();
-      if (!arbvp::ResultsFromJson(batch, &batches.back(), error)) return false;
-    }
-  }
-  return true;
-}
-
-// Runs RunMesa for `which` in a worker; fills `runs` (indexed like `subjects`).
-WorkerStatus RunMesaInWorker(const std::vector<VerifySubject>& subjects,
-                             const std::vector<Prepared>& prepared,
-                             const std::vector<size_t>& which, const VerifyOptions& options,
-                             std::vector<MesaRuns>* runs, std::string* error) {
-  auto job = [&](std::string* payload, std::string* job_error) {
-    std::unique_ptr<ArbExecutor> executor = CreateArbExecutor(options.exec, job_error);
-    if (!executor) return false;
-    nlohmann::ordered_json out;
-    if (!RunMesa(executor.get(), subjects, prepared, which, options, &out)) return false;
-    *payload = out.dump();
-    return true;
-  };
-  // The time limit is per program.
-  WorkerLimits limits = options.limits;
-  const int64_t total =
-      static_cast<int64_t>(limits.timeout_ms) * static_cast<int64_t>(which.size());
-  limits.timeout_ms = static_cast<int>(std::min<int64_t>(total, 24 * 3600 * 1000));
-  std::string payload;
-  WorkerStatus status = RunInWorker(limits, job, &payload, error);
-  if (status != WorkerStatus::Ok) return status;
-  nlohmann::json json = nlohmann::json::parse(payload, nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded() || !json.is_array() || json.size() != which.size()) {
-    *error = "the worker's answer is not the expected JSON";
-    return WorkerStatus::Crashed;
-  }
-  for (size_t i = 0; i < which.size(); ++i) {
-    if (!ReadMesa(json[i], &(*runs)[which[i]], error)) return WorkerStatus::Crashed;
-  }
-  return WorkerStatus::Ok;
-}
 
 Prepared Prepare(const VerifySubject& subject, const VerifyOptions& options) {
   Prepared p;
@@ -163,63 +73,153 @@ bool ValueAt(const std::vector<arbvp::VectorResult>& results, const Disagreement
   return false;
 }
 
+std::vector<std::string> MesaEngines(const VerifyOptions& options) {
+  std::vector<std::string> engines;
+  if (options.mesa_arb) engines.emplace_back(kEngineMesaArb);
+  if (options.mesa_glsl) engines.emplace_back(kEngineMesaGlsl);
+  return engines;
+}
+
+std::string MesaError(const VerifyOptions& options, const std::string& error) {
+  return fmt::format("mesa ({}, {}): {}", BackendName(options.exec.backend), options.exec.driver,
+                     error);
+}
+
+// One subject's verdict: the interpreter and the Mesa engines on every batch, compared.
+Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
+                  const VerifyOptions& options) {
+  Verdict verdict;
+  verdict.name = subject.name;
+  const Prepared p = Prepare(subject, options);
+  CountUntestable(p, &verdict);
+  const ArbPrograms programs{subject.vertex, subject.fragment};
+  // Per engine, its results per batch (all batches, or none when it failed).
+  std::map<std::string, std::vector<std::vector<arbvp::VectorResult>>> runs;
+  std::vector<std::string> errors;
+  for (const std::string& engine : MesaEngines(options)) {
+    std::vector<std::vector<arbvp::VectorResult>> batches;
+    std::string error;
+    for (const arbvp::InputBatch& batch : p.batches) {
+      std::vector<arbvp::VectorResult> results;
+      const bool ok =
+          engine == kEngineMesaArb
+              ? executor->Run(programs, batch.inputs, &results, &error)
+              : executor->RunTranslated(programs, options.emit, batch.inputs, &results, &error);
+      if (!ok) break;
+      batches.push_back(std::move(results));
+    }
+    if (!error.empty()) {
+      errors.push_back(engine + ": " + error);
+      continue;
+    }
+    const uint32_t applicable = arbvp::ApplicableDeviations(engine, options.exec.driver);
+    for (size_t b = 0; b < batches.size() && b < p.ref.size(); ++b) {
+      CompareWithReference(p.ref[b], batches[b], engine, applicable, p.batches[b].name, &verdict);
+    }
+    runs[engine] = std::move(batches);
+  }
+  // Each disagreement with every engine's value and the inputs its vector read.
+  for (Disagreement& d : verdict.disagreements) {
+    size_t b = 0;
+    while (b < p.batches.size() && p.batches[b].name != d.batch) ++b;
+    if (b == p.batches.size()) continue;
+    float value = 0.0f;
+    if (ValueAt(p.ref[b], d, &value)) d.values[kEngineRef] = value;
+    for (const auto& [engine, batches] : runs) {
+      if (b < batches.size() && ValueAt(batches[b], d, &value)) d.values[engine] = value;
+    }
+    d.inputs =
+        arbvp::DescribeReadInputs(subject.vertex, subject.fragment, p.batches[b].inputs, d.vector);
+  }
+  for (size_t i = 0; i < errors.size(); ++i) verdict.error += (i ? "; " : "") + errors[i];
+  return verdict;
+}
+
+// The job of one chunk: one GL context, the chunk's verdicts as a JSON array.
+WorkerJob ChunkJob(const std::vector<VerifySubject>& subjects, Chunk chunk,
+                   const VerifyOptions& options) {
+  return [&subjects, chunk, &options](std::string* payload, std::string* job_error) {
+    std::unique_ptr<ArbExecutor> executor = CreateArbExecutor(options.exec, job_error);
+    if (!executor) return false;
+    nlohmann::json out = nlohmann::json::array();
+    for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+      out.push_back(VerdictToJson(VerifyOne(executor.get(), subjects[i], options)));
+    }
+    *payload = out.dump();
+    // The worker exits right after its job: the system frees the context faster than
+    // destroying it does (unmapping softpipe's buffers page by page).
+    (void)executor.release();
+    return true;
+  };
+}
+
+// Runs the chunks, -j at a time, filling their verdicts; returns the chunks whose worker
+// gave no answer (crashed, hung, out of memory), with the reason in `errors`.
+std::vector<Chunk> VerifyChunks(const std::vector<VerifySubject>& subjects,
+                                const std::vector<Chunk>& chunks, const VerifyOptions& options,
+                                std::vector<Verdict>* verdicts, std::vector<std::string>* errors) {
+  const std::vector<WorkerResult> outcomes =
+      RunChunksInWorkers(options.limits, chunks, static_cast<size_t>(std::max(1, options.jobs)),
+                         [&](const Chunk& chunk) { return ChunkJob(subjects, chunk, options); });
+  std::vector<Chunk> failed;
+  errors->clear();
+  for (size_t c = 0; c < chunks.size(); ++c) {
+    const Chunk& chunk = chunks[c];
+    const WorkerResult& outcome = outcomes[c];
+    if (outcome.status == WorkerStatus::JobFailed) {
+      // No GL context: nothing of the chunk ran; the interpreter's counts still hold.
+      for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+        Verdict& verdict = (*verdicts)[i];
+        verdict.name = subjects[i].name;
+        CountUntestable(Prepare(subjects[i], options), &verdict);
+        verdict.error = MesaError(options, outcome.error);
+      }
+      continue;
+    }
+    nlohmann::json json;
+    if (outcome.status == WorkerStatus::Ok) {
+      json = nlohmann::json::parse(outcome.payload, nullptr, /*allow_exceptions=*/false);
+    }
+    bool read = json.is_array() && json.size() == chunk.count;
+    for (size_t i = 0; read && i < chunk.count; ++i) {
+      read = VerdictFromJson(json[i], &(*verdicts)[chunk.first + i]);
+    }
+    if (!read) {
+      failed.push_back(chunk);
+      errors->push_back(outcome.status == WorkerStatus::Ok
+                            ? "the worker's answer is not the expected JSON"
+                            : outcome.error);
+    }
+  }
+  return failed;
+}
+
 }  // namespace
 
 std::vector<Verdict> Verify(const std::vector<VerifySubject>& subjects,
                             const VerifyOptions& options) {
-  std::vector<Prepared> prepared;
-  prepared.reserve(subjects.size());
-  for (const VerifySubject& s : subjects) prepared.push_back(Prepare(s, options));
-
-  std::vector<MesaRuns> runs(subjects.size());
-  std::vector<std::string> failures(subjects.size());
-  if (!MesaEngines(options).empty() && !subjects.empty()) {
-    std::vector<size_t> all(subjects.size());
-    for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-    std::string error;
-    if (RunMesaInWorker(subjects, prepared, all, options, &runs, &error) != WorkerStatus::Ok) {
-      // Isolate the subject that brought the worker down: each alone.
-      for (size_t i = 0; i < subjects.size(); ++i) {
-        runs[i] = MesaRuns{};
-        if (RunMesaInWorker(subjects, prepared, {i}, options, &runs, &error) != WorkerStatus::Ok) {
-          failures[i] = fmt::format("mesa ({}, {}): {}", BackendName(options.exec.backend),
-                                    options.exec.driver, error);
-        }
-      }
-    }
-  }
-
-  std::vector<Verdict> verdicts;
-  for (size_t s = 0; s < subjects.size(); ++s) {
-    Verdict verdict;
+  std::vector<Verdict> verdicts(subjects.size());
+  if (subjects.empty()) return verdicts;
+  if (options.exec.backend == Backend::OSMesa) exec::PreloadOsMesa();
+  const size_t jobs = static_cast<size_t>(std::max(1, options.jobs));
+  // Two chunks per worker: each pays a GL context (a fifth of the work of a 50-program
+  // chunk on softpipe), and programs cost about the same.
+  const std::vector<Chunk> chunks = PlanChunks(subjects.size(), jobs, 2, 256);
+  std::vector<std::string> errors;
+  std::vector<Chunk> failed = VerifyChunks(subjects, chunks, options, &verdicts, &errors);
+  // A worker that died took its whole chunk: each of its programs again alone, so that only
+  // the guilty one gets the error.
+  const std::vector<Chunk> singles = Singles(failed);
+  if (singles.empty()) return verdicts;
+  std::vector<Chunk> guilty = VerifyChunks(subjects, singles, options, &verdicts, &errors);
+  for (size_t g = 0; g < guilty.size(); ++g) {
+    const size_t s = guilty[g].first;
+    // The interpreter's share of the verdict, which needs no driver.
+    Verdict& verdict = verdicts[s];
+    verdict = Verdict{};
     verdict.name = subjects[s].name;
-    const Prepared& p = prepared[s];
-    CountUntestable(p, &verdict);
-    std::vector<std::string> errors;
-    if (!failures[s].empty()) errors.push_back(failures[s]);
-    for (const auto& [engine, error] : runs[s].errors) errors.push_back(engine + ": " + error);
-    for (const auto& [engine, batches] : runs[s].results) {
-      uint32_t applicable = arbvp::ApplicableDeviations(engine, options.exec.driver);
-      for (size_t b = 0; b < batches.size() && b < p.ref.size(); ++b) {
-        CompareWithReference(p.ref[b], batches[b], engine, applicable, p.batches[b].name, &verdict);
-      }
-    }
-    for (Disagreement& d : verdict.disagreements) {
-      size_t b = 0;
-      while (b < p.batches.size() && p.batches[b].name != d.batch) ++b;
-      if (b == p.batches.size()) continue;
-      float value = 0.0f;
-      if (ValueAt(p.ref[b], d, &value)) d.values[kEngineRef] = value;
-      for (const auto& [engine, batches] : runs[s].results) {
-        if (b < batches.size() && ValueAt(batches[b], d, &value)) d.values[engine] = value;
-      }
-      d.inputs = arbvp::DescribeReadInputs(subjects[s].vertex, subjects[s].fragment,
-                                           p.batches[b].inputs, d.vector);
-    }
-    for (size_t i = 0; i < errors.size(); ++i) {
-      verdict.error += (i ? "; " : "") + errors[i];
-    }
-    verdicts.push_back(std::move(verdict));
+    CountUntestable(Prepare(subjects[s], options), &verdict);
+    verdict.error = MesaError(options, errors[g]);
   }
   return verdicts;
 }

@@ -25,7 +25,9 @@ inline constexpr const char* kEngineMesaGlsl = "mesa-glsl";
 
 struct VerifyOptions {
   ExecOptions exec;
-  // One worker runs every program's Mesa engines; timeout_ms is per program.
+  // Worker processes at a time, each verifying a chunk of programs on one GL context.
+  int jobs = 1;
+  // Of each worker; timeout_ms is per program.
   WorkerLimits limits;
   arbvp::GenerateOptions generate;
   bool mesa_arb = true;
@@ -68,8 +70,9 @@ struct Verdict {
   std::vector<Disagreement> disagreements;
 };
 
-// Verifies every subject; Mesa engines run in one worker process (a subject that crashes
-// or hangs it is retried alone so that the others still get a verdict).
+// Verifies every subject, in worker processes (options.jobs at a time); verdicts in subject
+// order. A subject that crashes or hangs its worker is retried alone, so that the others
+// still get a verdict and it gets the error.
 std::vector<Verdict> Verify(const std::vector<VerifySubject>& subjects,
                             const VerifyOptions& options);
 
