@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,9 +28,10 @@ struct Input {
   std::string path;          // as given, or as found under a given directory; "-" is stdin
   std::string display_path;  // "<stdin>" for "-"
   std::string error;         // set when the argument cannot give a program (empty directory)
+  bool found = false;        // found under a directory argument, not named
 };
 
-// Expands files and directories (recursively, sorted, ARB program extensions only).
+// Expands files and directories (recursively, sorted; ARB and GLSL file extensions).
 // Missing paths are kept: reading them reports the error.
 std::vector<Input> ExpandInputs(const std::vector<std::string>& args);
 
@@ -54,6 +56,9 @@ struct CommonOptions {
 
 // The number of worker threads -j asks for (0: one per core).
 size_t ResolveJobs(const CommonOptions& options);
+// Runs body(0) ... body(count - 1) on up to `threads` threads (the caller's among them),
+// each index once; a body writes only its own index's result.
+void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>& body);
 void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);
 
 // Resolves --limits; on error prints it and returns false.

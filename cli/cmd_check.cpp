@@ -1,9 +1,5 @@
 // arbiter check: validate every input (ARB programs and GLSL shaders) and report its
 // diagnostics, in input order whatever the number of worker threads.
-#include <algorithm>
-#include <atomic>
-#include <thread>
-
 #include "arbiter/arbvp/check.h"
 #include "arbiter/glsl/check.h"
 #include "cli.h"
@@ -96,19 +92,9 @@ int RunCheck(const CommonOptions& options) {
   if (options.stage == "vert" || options.stage == "frag") {
     results.push_back(CheckOneShader(inputs, options, &strings));
   } else {
-    // Workers take inputs in turn; each result lands at its input's index.
     results.resize(inputs.size());
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-      for (size_t i = next++; i < inputs.size(); i = next++) {
-        results[i] = CheckOne(inputs[i], options, arb_options);
-      }
-    };
-    size_t threads = std::min<size_t>(ResolveJobs(options), inputs.size());
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
+    ParallelFor(inputs.size(), ResolveJobs(options),
+                [&](size_t i) { results[i] = CheckOne(inputs[i], options, arb_options); });
   }
   Exit exit = Exit::Ok;
   std::vector<compiler::FileReport> reports;

@@ -40,10 +40,19 @@ std::string Stem(const Input& input) {
   return fs::path(input.path).stem().string();
 }
 
-bool Write(const std::string& path, const std::string& text) {
+// What one job prints, kept until every job before it has printed (output in input order
+// whatever -j).
+struct Outcome {
+  Exit exit = Exit::Ok;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+bool Write(const std::string& path, const std::string& text, Outcome* outcome) {
   std::string error;
   if (compiler::WriteFileAtomically(path, text, &error)) return true;
-  fmt::print(stderr, "arbiter: error: cannot write '{}': {}\n", path, error);
+  outcome->err += fmt::format("arbiter: error: cannot write '{}': {}\n", path, error);
+  outcome->exit = Exit::Environment;
   return false;
 }
 
@@ -82,7 +91,8 @@ std::string ShaderPath(const TranslateCommandOptions& options, const Destination
   return d.base + (vertex ? ".vert" : ".frag");
 }
 
-Exit RunJob(const TranslateCommandOptions& options, const Job& job, bool several) {
+Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool several) {
+  Outcome outcome;
   arbvp::EmitOptions emit;
   emit.comments = !options.no_comments;
   arbvp::LookupMutation(options.mutation, &emit.mutation);
@@ -96,33 +106,34 @@ Exit RunJob(const TranslateCommandOptions& options, const Job& job, bool several
                      : job.vertex ? job.vertex->input.display_path
                                   : job.fragment->input.display_path;
   if (!t.ok) {
-    fmt::print(stderr,
-               "arbiter: internal error: the translation of {} is not valid GLSL 1.10 ({}); "
-               "nothing was written. This is a bug in arbiter's translator: please report it "
-               "with the program.\n",
-               name, t.error);
-    return Exit::Environment;
+    outcome.err = fmt::format(
+        "arbiter: internal error: the translation of {} is not valid GLSL 1.10 ({}); "
+        "nothing was written. This is a bug in arbiter's translator: please report it "
+        "with the program.\n",
+        name, t.error);
+    outcome.exit = Exit::Environment;
+    return outcome;
   }
   Destination d = Place(options, job, several);
   if (d.to_stdout) {
     if (!t.vertex.empty() && !t.fragment.empty()) {
-      fmt::print("// ---- vertex shader ----\n{}// ---- fragment shader ----\n{}", t.vertex,
-                 t.fragment);
+      outcome.out = fmt::format("// ---- vertex shader ----\n{}// ---- fragment shader ----\n{}",
+                                t.vertex, t.fragment);
     } else {
-      fmt::print("{}", t.vertex.empty() ? t.fragment : t.vertex);
+      outcome.out = t.vertex.empty() ? t.fragment : t.vertex;
     }
   } else {
-    if (!t.vertex.empty() && !Write(ShaderPath(options, d, several, job, true), t.vertex)) {
-      return Exit::Environment;
+    if (!t.vertex.empty() &&
+        !Write(ShaderPath(options, d, several, job, true), t.vertex, &outcome)) {
+      return outcome;
     }
-    if (!t.fragment.empty() && !Write(ShaderPath(options, d, several, job, false), t.fragment)) {
-      return Exit::Environment;
+    if (!t.fragment.empty() &&
+        !Write(ShaderPath(options, d, several, job, false), t.fragment, &outcome)) {
+      return outcome;
     }
   }
-  if (!d.bindings.empty() && !Write(d.bindings, arbvp::BindingMapToJson(t.bindings))) {
-    return Exit::Environment;
-  }
-  return Exit::Ok;
+  if (!d.bindings.empty()) Write(d.bindings, arbvp::BindingMapToJson(t.bindings), &outcome);
+  return outcome;
 }
 
 int RunTranslate(const TranslateCommandOptions& options) {
@@ -185,7 +196,16 @@ int RunTranslate(const TranslateCommandOptions& options) {
       }
     }
   }
-  for (const Job& job : jobs) exit = Worse(exit, RunJob(options, job, several));
+  // Jobs translate (glslang's self-check) and write their files in parallel; what they
+  // print comes out in input order.
+  std::vector<Outcome> outcomes(jobs.size());
+  ParallelFor(jobs.size(), ResolveJobs(options.common),
+              [&](size_t i) { outcomes[i] = RunJob(options, jobs[i], several); });
+  for (const Outcome& o : outcomes) {
+    std::fputs(o.err.c_str(), stderr);
+    std::fwrite(o.out.data(), 1, o.out.size(), stdout);
+    exit = Worse(exit, o.exit);
+  }
   return static_cast<int>(exit);
 }
 
@@ -218,6 +238,8 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
   cmd->add_option("--error-limit", common.error_limit, "stop reporting errors after N")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
+  cmd->add_option("-j,--jobs", common.jobs, "worker threads (default: one per core)")
+      ->check(CLI::Range(0, 256));
   // Test-only: inject one translator bug, to prove that `verify` catches it.
   cmd->add_option("--mutation", options->mutation)->group("");
   return [options] { return RunTranslate(*options); };

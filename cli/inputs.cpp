@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -67,7 +68,7 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
                           "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
                           "this directory"});
       }
-      for (std::string& path : found) inputs.push_back({path, path, {}});
+      for (std::string& path : found) inputs.push_back({path, path, {}, true});
       continue;
     }
     inputs.push_back({arg, arg == "-" ? "<stdin>" : arg, {}});
@@ -115,6 +116,18 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
 size_t ResolveJobs(const CommonOptions& options) {
   if (options.jobs > 0) return static_cast<size_t>(options.jobs);
   return std::max(1u, std::thread::hardware_concurrency());
+}
+
+void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>& body) {
+  // Threads take indices in turn, so a slow input does not hold up a fixed share.
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < count; i = next++) body(i);
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
 }
 
 bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitProfile>* out) {

@@ -10,6 +10,8 @@ Exit LoadArbPrograms(const CommonOptions& options, std::vector<LoadedArb>* loade
   std::vector<compiler::FileReport> reports;
   Exit exit = Exit::Ok;
   for (const Input& input : ExpandInputs(options.files)) {
+    // A directory may hold GLSL shaders beside the ARB programs: those are check's alone.
+    if (input.found && glsl::StageFromPath(input.path)) continue;
     compiler::FileReport report;
     report.path = input.display_path;
     LoadedArb l{input, ReadInput(input, &report), {}};
