@@ -56,7 +56,7 @@ bool Write(const std::string& path, const std::string& text, Outcome* outcome) {
   return false;
 }
 
-// Where a job's files go: `base` + ".vert"/".frag"/".bindings.json" when writing files.
+// Where a job's files go: `base` + ".vert"/".frag", and the binding map, when writing files.
 struct Destination {
   bool to_stdout = true;
   std::string base;      // path without extension
@@ -78,7 +78,9 @@ Destination Place(const TranslateCommandOptions& options, const Job& job, bool s
     }
   }
   if (!options.bindings.empty()) {
-    d.bindings = several ? (fs::path(options.bindings) / (job.stem + ".bindings.json")).string()
+    // Named after the shader file: a.vp and a.fp in one directory must not share a map.
+    const std::string shader = job.stem + (job.vertex ? ".vert" : ".frag");
+    d.bindings = several ? (fs::path(options.bindings) / (shader + ".bindings.json")).string()
                          : options.bindings;
   }
   return d;
@@ -218,7 +220,8 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
       app->add_subcommand("translate", "translate ARB programs to GLSL 1.10 (exact semantics)");
   cmd->footer(
       "One input: GLSL to stdout or to -o FILE. Several inputs: -o DIR gets NAME.vert / "
-      "NAME.frag per program. --pair translates a vertex and a fragment program into one GLSL "
+      "NAME.frag per program (and --bindings DIR NAME.vert.bindings.json / "
+      "NAME.frag.bindings.json). --pair translates a vertex and a fragment program into one GLSL "
       "program with matching varyings (-o BASE writes BASE.vert and BASE.frag). Every "
       "translation is compiled by glslang first; files are written atomically.");
   CommonOptions& common = options->common;
