@@ -127,8 +127,10 @@ int RunTests(const RunCommandOptions& options) {
     }
     run.png_dir = options.png;
   }
-  if (!options.junit.empty() &&
-      std::find(paths.begin(), paths.end(), options.junit) != paths.end()) {
+  std::error_code ec;
+  if (!options.junit.empty() && std::any_of(paths.begin(), paths.end(), [&](const std::string& p) {
+        return fs::equivalent(p, options.junit, ec);
+      })) {
     fmt::print(stderr, "arbiter: error: --junit {} would overwrite an input\n", options.junit);
     return static_cast<int>(Exit::Usage);
   }

@@ -198,6 +198,25 @@ int RunTranslate(const TranslateCommandOptions& options) {
       }
     }
   }
+  // An output that is an input would replace the program by its translation.
+  for (const Job& job : jobs) {
+    const Destination d = Place(options, job, several);
+    std::vector<std::string> outputs{d.bindings};
+    if (!d.to_stdout) {
+      if (job.vertex) outputs.push_back(ShaderPath(options, d, several, job, true));
+      if (job.fragment) outputs.push_back(ShaderPath(options, d, several, job, false));
+    }
+    for (const LoadedArb& l : loaded) {
+      for (const std::string& out : outputs) {
+        std::error_code ec;
+        if (!out.empty() && l.input.path != "-" && fs::equivalent(out, l.input.path, ec)) {
+          fmt::print(stderr, "arbiter: error: the output '{}' is the input '{}'\n", out,
+                     l.input.display_path);
+          return static_cast<int>(Exit::Usage);
+        }
+      }
+    }
+  }
   // Jobs translate (glslang's self-check) and write their files in parallel; what they
   // print comes out in input order.
   std::vector<Outcome> outcomes(jobs.size());
