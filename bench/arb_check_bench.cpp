@@ -1,14 +1,20 @@
-// Parse+check throughput of the ARB front end: the whole corpus, and one large program.
+// Throughput of the ARB front end, stage by stage: lexing only (BM_Lex*), lexing and parsing
+// (BM_Parse*), and parsing and checking (BM_Check*, what `arbiter check` does), over the
+// whole corpus and over one large program.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "arbiter/arbvp/check.h"
+#include "lexer.h"  // arbvp/src: the stages on their own
+#include "parser.h"
 
 namespace {
 
@@ -48,9 +54,66 @@ std::string LargeProgram() {
   return text;
 }
 
-void CheckAll(benchmark::State& state, const std::vector<std::string>& texts) {
+int64_t TotalBytes(const std::vector<std::string>& texts) {
   int64_t bytes = 0;
   for (const std::string& t : texts) bytes += static_cast<int64_t>(t.size());
+  return bytes;
+}
+
+void SetCounters(benchmark::State& state, const std::vector<std::string>& texts) {
+  state.SetBytesProcessed(state.iterations() * TotalBytes(texts));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(texts.size()));
+  state.counters["programs"] = static_cast<double>(texts.size());
+}
+
+// The stages below the header: what Lex and ParseProgram start from.
+constexpr uint32_t kHeaderSize = 10;  // "!!ARBvp1.0", "!!ARBfp1.0"
+
+// The programs with a usable header, and their kind (the others stop at the header).
+struct Headed {
+  std::vector<std::string> texts;
+  std::vector<arbiter::arbvp::ProgramKind> kinds;
+};
+Headed WithHeader(const std::vector<std::string>& texts) {
+  Headed out;
+  for (const std::string& t : texts) {
+    std::string_view header = std::string_view(t).substr(0, kHeaderSize);
+    if (header != "!!ARBvp1.0" && header != "!!ARBfp1.0") continue;
+    out.texts.push_back(t);
+    out.kinds.push_back(header == "!!ARBvp1.0" ? arbiter::arbvp::ProgramKind::Vertex
+                                               : arbiter::arbvp::ProgramKind::Fragment);
+  }
+  return out;
+}
+
+void LexAll(benchmark::State& state, const Headed& programs) {
+  for (auto _ : state) {
+    for (const std::string& t : programs.texts) {
+      arbiter::compiler::SourceFile source("bench", t);
+      arbiter::compiler::DiagnosticSink sink(20);
+      arbiter::arbvp::Lexer lexer(source, kHeaderSize, &sink);
+      int tokens = 0;
+      while (lexer.Next().kind != arbiter::arbvp::Tok::Eof) ++tokens;
+      benchmark::DoNotOptimize(tokens);
+    }
+  }
+  SetCounters(state, programs.texts);
+}
+
+void ParseAll(benchmark::State& state, const Headed& programs) {
+  for (auto _ : state) {
+    for (size_t i = 0; i < programs.texts.size(); ++i) {
+      arbiter::compiler::SourceFile source("bench", programs.texts[i]);
+      arbiter::compiler::DiagnosticSink sink(20);
+      auto program =
+          arbiter::arbvp::ParseProgram(source, programs.kinds[i], {0, kHeaderSize}, &sink);
+      benchmark::DoNotOptimize(program.get());
+    }
+  }
+  SetCounters(state, programs.texts);
+}
+
+void CheckAll(benchmark::State& state, const std::vector<std::string>& texts) {
   arbiter::arbvp::CheckOptions options;
   for (auto _ : state) {
     for (const std::string& t : texts) {
@@ -60,21 +123,46 @@ void CheckAll(benchmark::State& state, const std::vector<std::string>& texts) {
       benchmark::DoNotOptimize(result.ok);
     }
   }
-  state.SetBytesProcessed(state.iterations() * bytes);
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(texts.size()));
-  state.counters["programs"] = static_cast<double>(texts.size());
+  SetCounters(state, texts);
 }
 
-void BM_CheckCorpus(benchmark::State& state) {
+const std::vector<std::string>& Corpus() {
   static const std::vector<std::string> corpus = LoadCorpus();
-  CheckAll(state, corpus);
+  return corpus;
 }
+const std::vector<std::string>& Large() {
+  static const std::vector<std::string> large = {LargeProgram()};
+  return large;
+}
+
+void BM_LexCorpus(benchmark::State& state) {
+  static const Headed programs = WithHeader(Corpus());
+  LexAll(state, programs);
+}
+BENCHMARK(BM_LexCorpus)->Unit(benchmark::kMillisecond);
+
+void BM_ParseCorpus(benchmark::State& state) {
+  static const Headed programs = WithHeader(Corpus());
+  ParseAll(state, programs);
+}
+BENCHMARK(BM_ParseCorpus)->Unit(benchmark::kMillisecond);
+
+void BM_CheckCorpus(benchmark::State& state) { CheckAll(state, Corpus()); }
 BENCHMARK(BM_CheckCorpus)->Unit(benchmark::kMillisecond);
 
-void BM_CheckLargeProgram(benchmark::State& state) {
-  static const std::vector<std::string> large = {LargeProgram()};
-  CheckAll(state, large);
+void BM_LexLargeProgram(benchmark::State& state) {
+  static const Headed programs = WithHeader(Large());
+  LexAll(state, programs);
 }
+BENCHMARK(BM_LexLargeProgram)->Unit(benchmark::kMillisecond);
+
+void BM_ParseLargeProgram(benchmark::State& state) {
+  static const Headed programs = WithHeader(Large());
+  ParseAll(state, programs);
+}
+BENCHMARK(BM_ParseLargeProgram)->Unit(benchmark::kMillisecond);
+
+void BM_CheckLargeProgram(benchmark::State& state) { CheckAll(state, Large()); }
 BENCHMARK(BM_CheckLargeProgram)->Unit(benchmark::kMillisecond);
 
 }  // namespace

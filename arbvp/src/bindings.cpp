@@ -1,7 +1,10 @@
 // Canonical spellings of bindings, as the specs write them.
 #include <fmt/format.h>
 
+#include <bit>
+
 #include "arbiter/arbvp/ir.h"
+#include "binding_key.h"
 
 namespace arbiter::arbvp {
 namespace {
@@ -174,6 +177,144 @@ std::string BindingName(const Binding& b, ProgramKind kind) {
   }
   (void)kind;
   return "?";
+}
+
+namespace {
+
+// The selector fields a state binding's name spells (StateName): face, index, coordinate,
+// matrix, modifier, row.
+struct StateFields {
+  bool face = false;
+  bool index = false;
+  bool coord = false;
+  bool matrix = false;
+};
+
+StateFields StateNameFields(const Binding& b) {
+  switch (b.state) {
+    case StateItem::MaterialAmbient:
+    case StateItem::MaterialDiffuse:
+    case StateItem::MaterialSpecular:
+    case StateItem::MaterialEmission:
+    case StateItem::MaterialShininess:
+    case StateItem::LightModelSceneColor:
+      return {.face = true};
+    case StateItem::LightAmbient:
+    case StateItem::LightDiffuse:
+    case StateItem::LightSpecular:
+    case StateItem::LightPosition:
+    case StateItem::LightAttenuation:
+    case StateItem::LightSpotDirection:
+    case StateItem::LightHalf:
+    case StateItem::ClipPlane:
+    case StateItem::TexEnvColor:
+      return {.index = true};
+    case StateItem::LightProdAmbient:
+    case StateItem::LightProdDiffuse:
+    case StateItem::LightProdSpecular:
+      return {.face = true, .index = true};
+    case StateItem::TexGenEye:
+    case StateItem::TexGenObject:
+      return {.index = true, .coord = true};
+    case StateItem::MatrixRow: {
+      bool numbered = b.matrix != MatrixName::Projection && b.matrix != MatrixName::Mvp;
+      return {.index = numbered, .matrix = true};
+    }
+    case StateItem::LightModelAmbient:
+    case StateItem::FogColor:
+    case StateItem::FogParams:
+    case StateItem::PointSize:
+    case StateItem::PointAttenuation:
+    case StateItem::DepthRange:
+      return {};
+  }
+  return {.face = true, .index = true, .coord = true, .matrix = true};
+}
+
+// Whether BindingName spells the index of a non-state binding.
+bool NameHasIndex(const Binding& b) {
+  switch (b.kind) {
+    case BindingKind::VertexAttrib:
+      return b.vertex_attrib == VertexAttrib::Weight || b.vertex_attrib == VertexAttrib::TexCoord ||
+             b.vertex_attrib == VertexAttrib::MatrixIndex ||
+             b.vertex_attrib == VertexAttrib::Generic;
+    case BindingKind::FragmentAttrib:
+      return b.fragment_attrib == FragmentAttrib::TexCoord;
+    case BindingKind::Result:
+      return b.result == ResultReg::TexCoord || (b.result == ResultReg::FragColor && b.indexed);
+    case BindingKind::ProgramEnv:
+    case BindingKind::ProgramLocal:
+      return true;
+    case BindingKind::State:
+    case BindingKind::Constant:
+      return false;
+  }
+  return true;
+}
+
+uint32_t FloatBits(float v, bool signed_zero) {
+  return std::bit_cast<uint32_t>(signed_zero ? v : v + 0.0f);  // -0 + 0 is +0
+}
+
+}  // namespace
+
+// Mirrors BindingName (and StateName): a field goes into the key only where the name spells
+// it, so equal names give equal keys; and the name spells every field of the key
+// distinctly, so different keys give different names. Keep the three in step
+// (tests/arbvp/front_end_test.cpp checks them against each other).
+BindingKey KeyOf(const Binding& b, bool signed_zero) {
+  BindingKey key;
+  auto& w = key.words;
+  w[0] = static_cast<uint32_t>(b.kind);
+  if (b.kind == BindingKind::Constant) {
+    for (size_t i = 0; i < 4; ++i) w[i + 1] = FloatBits(b.value[i], signed_zero);
+    return key;
+  }
+  uint32_t item = 0;
+  uint32_t extra = 0;  // face, secondary, coordinate, matrix, modifier, row, indexed
+  bool index = NameHasIndex(b);
+  switch (b.kind) {
+    case BindingKind::VertexAttrib:
+      item = static_cast<uint32_t>(b.vertex_attrib);
+      break;
+    case BindingKind::FragmentAttrib:
+      item = static_cast<uint32_t>(b.fragment_attrib);
+      break;
+    case BindingKind::Result:
+      item = static_cast<uint32_t>(b.result);
+      if (b.result == ResultReg::Color) {
+        extra = static_cast<uint32_t>(b.face) | (b.secondary ? 2u : 0u);
+      } else if (b.result == ResultReg::FragColor) {
+        extra = b.indexed ? 1u : 0u;
+      }
+      break;
+    case BindingKind::State: {
+      item = static_cast<uint32_t>(b.state);
+      StateFields f = StateNameFields(b);
+      index = f.index;
+      if (f.face) extra |= static_cast<uint32_t>(b.face);
+      if (f.coord) extra |= uint32_t{b.coord} << 8;
+      if (f.matrix) {
+        extra |= (static_cast<uint32_t>(b.matrix) << 16) |
+                 (static_cast<uint32_t>(b.modifier) << 20) | (uint32_t{b.row} << 24);
+      }
+      break;
+    }
+    case BindingKind::ProgramEnv:
+    case BindingKind::ProgramLocal:
+    case BindingKind::Constant:
+      break;
+  }
+  w[1] = item;
+  w[2] = extra;
+  w[3] = index ? static_cast<uint32_t>(b.index) : 0u;
+  return key;
+}
+
+size_t BindingKeyHash::operator()(const BindingKey& key) const {
+  uint64_t hash = 0;
+  for (uint32_t word : key.words) hash = (hash ^ word) * 0x9E3779B97F4A7C15ull;  // Fibonacci
+  return static_cast<size_t>(hash ^ (hash >> 32));
 }
 
 int GenericAttribSlot(const Binding& b) {

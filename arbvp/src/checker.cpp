@@ -4,7 +4,6 @@
 #include "arbiter/arbvp/check.h"
 #include "check/checks.h"
 #include "diag.h"
-#include "lexer.h"
 #include "parser.h"
 
 namespace arbiter::arbvp {
@@ -84,8 +83,7 @@ CheckResult CheckProgram(const compiler::SourceFile& source, const CheckOptions&
                              want_vp ? kFpHeader : kVpHeader));
     return result;
   }
-  std::vector<Token> tokens = Lex(source, header.end, sink);
-  result.program = ParseProgram(source, tokens, kind, header, sink);
+  result.program = ParseProgram(source, kind, header, sink);
   CheckContext ctx{*result.program, source, sink, options.profile, &result.stats, counted_before};
   CheckProgramOptions(ctx);
   CheckBindings(ctx);

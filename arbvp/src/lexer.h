@@ -34,8 +34,37 @@ struct Token {
   uint32_t end = 0;
 };
 
-// Splits text[start..] into tokens; invalid characters and malformed numbers are reported
-// and skipped. The last token is always Eof (at the end of the text).
+// Splits text[start..] into tokens, one at a time. Invalid characters and malformed numbers
+// are reported to `sink` (when not null) and skipped. After the last token, Next() returns
+// Eof (at the end of the text) for ever.
+class Lexer {
+ public:
+  Lexer(const compiler::SourceFile& source, uint32_t start, compiler::DiagnosticSink* sink);
+
+  Token Next();
+  // Lexes up to `count` tokens into out[0..], stopping after Eof; returns how many. Cheaper
+  // than a call per token.
+  size_t Fill(Token* out, size_t count);
+  // Reports nothing from now on.
+  void Silence() { sink_ = nullptr; }
+
+ private:
+  Token Lex1();
+  void SkipComment();
+  void SkipInvalid();
+  Token LexNumber();
+
+  const compiler::SourceFile& source_;
+  // The text, NUL-terminated (std::string guarantees it): scans stop at the terminator
+  // without a bounds check, and the size check follows only when a scan stopped.
+  const char* text_;
+  uint32_t size_;
+  uint32_t pos_;
+  compiler::DiagnosticSink* sink_;
+  bool warned_non_ascii_ = false;
+};
+
+// All the tokens of text[start..]; the last one is Eof.
 std::vector<Token> Lex(const compiler::SourceFile& source, uint32_t start,
                        compiler::DiagnosticSink* sink);
 

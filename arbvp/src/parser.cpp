@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -22,13 +23,30 @@ namespace {
 using compiler::DiagnosticSink;
 using compiler::SourceFile;
 
+// A <floatConstant>'s value, rounded to nearest as strtof (what Mesa's lexer uses) rounds it.
+// from_chars rounds the same and needs no NUL-terminated copy of the text; the values it
+// leaves unset (out of range: overflow, underflow) go to strtof, which gives +inf on
+// overflow, as GL would.
+float ParseFloatText(std::string_view text) {
+  float value = 0.0f;
+  auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc()) return value;
+  std::string copy(text);
+  return std::strtof(copy.c_str(), nullptr);
+}
+
 // Thrown after an error has been reported, to abandon the current statement.
 struct StatementError {};
 
-// Lets the symbol table be searched with a string_view (no allocation per lookup).
+// Lets the symbol table be searched with a string_view (no allocation per lookup). FNV-1a:
+// names are short, and a lookup per operand makes the general-purpose hash show in profiles.
 struct StringHash {
   using is_transparent = void;
-  size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  size_t operator()(std::string_view s) const {
+    uint64_t hash = 14695981039346656037ull;
+    for (char c : s) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    return static_cast<size_t>(hash);
+  }
 };
 
 struct Symbol {
@@ -45,16 +63,24 @@ constexpr std::string_view kFpKeywords[] = {"ALIAS",   "ATTRIB", "END",   "OPTIO
 
 class Parser {
  public:
-  Parser(const SourceFile& source, const std::vector<Token>& tokens, ProgramKind kind,
-         DiagnosticSink* sink)
-      : source_(source), text_(source.text()), tokens_(tokens), kind_(kind), sink_(sink) {}
+  // The parser lexes as it goes, keeping only a window of tokens (see ReportLexicalErrors).
+  Parser(const SourceFile& source, ProgramKind kind, Range header, DiagnosticSink* sink)
+      : source_(source),
+        text_(source.text()),
+        lexer_(source, header.end, sink),
+        kind_(kind),
+        sink_(sink) {}
 
   std::unique_ptr<Program> Run(Range header) {
     program_ = std::make_unique<Program>();
     program_->kind = kind_;
     program_->header = header;
+    // Room for a typical program, so that it does not grow (and move) its arrays step by step.
+    program_->vars.reserve(kTypicalStatements);
+    program_->instructions.reserve(kTypicalStatements);
     last_end_ = header.end;
     ParseProgram();
+    ReportLexicalErrors();  // those after END
     return std::move(program_);
   }
 
@@ -64,20 +90,54 @@ class Parser {
 
   // ---- tokens -------------------------------------------------------------------------
 
-  const Token& Peek(size_t ahead = 0) const {
-    size_t i = std::min(pos_ + ahead, tokens_.size() - 1);
-    return tokens_[i];
+  // Every lexical error comes before the first parser diagnostic, in text order, as when the
+  // whole text was lexed before parsing: the lexer reports what it meets as the parser
+  // reads, and before the parser reports anything (or when it stops) a copy of the lexer
+  // lexes the rest of the text for its errors alone. The parser's lexer is silent from then
+  // on. Lexing the text twice only for programs with errors keeps checking fast, and
+  // reading tokens as they come keeps no program-sized token array in memory.
+  void ReportLexicalErrors() {
+    if (lexical_errors_reported_) return;
+    lexical_errors_reported_ = true;
+    Lexer rest = lexer_;
+    while (rest.Next().kind != Tok::Eof) {
+    }
+    lexer_.Silence();
+  }
+  compiler::Diagnostic* ReportDiagnostic(Diag diag, Range range, std::string message) {
+    ReportLexicalErrors();
+    return sink_->Report(Info(diag), &source_, range, std::move(message));
+  }
+
+  // Token pos_ + ahead; Eof past the end. A reference stays valid until a few tokens later.
+  const Token& Peek(size_t ahead = 0) {
+    size_t i = pos_ + ahead;
+    if (i >= fetched_) [[unlikely]]
+      Fetch(i);
+    return window_[std::min(i, eof_index_) % kWindow];
+  }
+  // Lexes up to token i (or Eof), and on as far as the window allows: lexing a batch of
+  // tokens per call keeps the call out of most Peeks.
+  [[gnu::noinline]] void Fetch(size_t i) {
+    size_t last = std::max(i, pos_ + kWindow - 3);  // keeps tokens pos_ - 2 on intact
+    while (fetched_ <= last && fetched_ <= eof_index_) {
+      size_t slot = fetched_ % kWindow;
+      size_t count = std::min(last + 1 - fetched_, kWindow - slot);  // contiguous slots
+      size_t got = lexer_.Fill(&window_[slot], count);
+      fetched_ += got;
+      if (window_[slot + got - 1].kind == Tok::Eof) eof_index_ = fetched_ - 1;
+    }
   }
   std::string_view Text(const Token& t) const {
-    return std::string_view(text_).substr(t.begin, t.end - t.begin);
+    return std::string_view(text_.data() + t.begin, t.end - t.begin);  // the lexer's bounds
   }
-  bool PeekIs(Tok kind, size_t ahead = 0) const { return Peek(ahead).kind == kind; }
-  bool PeekIdent(std::string_view word, size_t ahead = 0) const {
+  bool PeekIs(Tok kind, size_t ahead = 0) { return Peek(ahead).kind == kind; }
+  bool PeekIdent(std::string_view word, size_t ahead = 0) {
     return Peek(ahead).kind == Tok::Ident && Text(Peek(ahead)) == word;
   }
   Token Advance() {
     Token t = Peek();
-    if (pos_ < tokens_.size() - 1) ++pos_;
+    if (pos_ < eof_index_) ++pos_;
     last_end_ = t.end;
     return t;
   }
@@ -99,11 +159,11 @@ class Parser {
     return word.empty() ? std::string() : fmt::format("'{}' ", word);
   }
   [[noreturn]] void Fail(Diag diag, Range range, std::string message) {
-    sink_->Report(Info(diag), &source_, range, std::move(message));
+    ReportDiagnostic(diag, range, std::move(message));
     throw StatementError{};
   }
   void Report(Diag diag, Range range, std::string message) {
-    sink_->Report(Info(diag), &source_, range, std::move(message));
+    ReportDiagnostic(diag, range, std::move(message));
   }
   [[noreturn]] void FailExpected(std::string_view what) {
     const Token& t = Peek();
@@ -301,8 +361,8 @@ class Parser {
     }
     auto it = symbols_.find(word);
     if (it != symbols_.end()) {
-      compiler::Diagnostic* d = sink_->Report(Info(Diag::DeclRedeclared), &source_, RangeOf(name),
-                                              fmt::format("redeclaration of '{}'", word));
+      compiler::Diagnostic* d = ReportDiagnostic(Diag::DeclRedeclared, RangeOf(name),
+                                                 fmt::format("redeclaration of '{}'", word));
       if (d)
         d->notes.push_back(
             {&source_, it->second.decl, fmt::format("'{}' first declared here", word)});
@@ -542,8 +602,7 @@ class Parser {
     }
     if (!PeekIs(Tok::Integer) && !PeekIs(Tok::Float)) FailExpected("a number");
     Token number = Advance();
-    std::string copy(Text(number));
-    float value = std::strtof(copy.c_str(), nullptr);  // inf on overflow, as GL would
+    float value = ParseFloatText(Text(number));
     *range = {begin, number.end};
     return negative ? -value : value;
   }
@@ -1375,7 +1434,7 @@ class Parser {
         Fail(Diag::OperandSrcWriteOnly, RangeOf(start),
              "cannot read a result register: results are write-only");
       }
-      if (!symbols_.count(w) && PeekIs(Tok::Dot, 1) && (w == "vertex" || w == "fragment")) {
+      if ((w == "vertex" || w == "fragment") && !symbols_.count(w) && PeekIs(Tok::Dot, 1)) {
         Fail(Diag::BindingStage, RangeOf(t),
              fmt::format("'{}.*' bindings exist only in {} programs", w,
                          w == "vertex" ? "vertex" : "fragment"));
@@ -1644,7 +1703,15 @@ class Parser {
 
   const SourceFile& source_;
   const std::string& text_;
-  const std::vector<Token>& tokens_;
+  // The tokens the parser has looked at: a small window that the lexer refills, so that no
+  // program-sized token array is kept.
+  static constexpr size_t kWindow = 32;
+  static constexpr size_t kTypicalStatements = 32;
+  Lexer lexer_;
+  std::array<Token, kWindow> window_{};
+  bool lexical_errors_reported_ = false;                   // all of them: the lexer is silent
+  size_t fetched_ = 0;                                     // tokens lexed so far
+  size_t eof_index_ = std::numeric_limits<size_t>::max();  // index of the Eof token, once lexed
   ProgramKind kind_;
   DiagnosticSink* sink_;
   size_t pos_ = 0;
@@ -1672,10 +1739,9 @@ bool IsReservedWord(std::string_view word, ProgramKind kind) {
   return !(sat && op == Opcode::KIL);
 }
 
-std::unique_ptr<Program> ParseProgram(const compiler::SourceFile& source,
-                                      const std::vector<Token>& tokens, ProgramKind kind,
+std::unique_ptr<Program> ParseProgram(const compiler::SourceFile& source, ProgramKind kind,
                                       Range header, compiler::DiagnosticSink* sink) {
-  return Parser(source, tokens, kind, sink).Run(header);
+  return Parser(source, kind, header, sink).Run(header);
 }
 
 }  // namespace arbiter::arbvp

@@ -9,11 +9,11 @@
 
 namespace arbiter::arbvp {
 
-// Parses the tokens after the header. Grammar errors, unresolved names and bindings that
-// do not exist in `kind` are reported here; limits and cross-statement rules are left to
-// the checks (check/checks.h). The returned program holds every statement that parsed.
-std::unique_ptr<Program> ParseProgram(const compiler::SourceFile& source,
-                                      const std::vector<Token>& tokens, ProgramKind kind,
+// Parses the program text after the header. Lexical errors, grammar errors, unresolved
+// names and bindings that do not exist in `kind` are reported here, the lexical errors
+// first; limits and cross-statement rules are left to the checks (check/checks.h). The
+// returned program holds every statement that parsed.
+std::unique_ptr<Program> ParseProgram(const compiler::SourceFile& source, ProgramKind kind,
                                       Range header, compiler::DiagnosticSink* sink);
 
 // The names a program of `kind` may not use as identifiers (ARBvp 2.14.2, ARBfp 3.11.2).

@@ -1,6 +1,7 @@
 // Expansions of the opcode, option and diagnostic tables.
+#include <algorithm>
 #include <cassert>
-#include <unordered_map>
+#include <utility>
 
 #include "arbiter/arbvp/check.h"
 #include "arbiter/arbvp/ir.h"
@@ -23,14 +24,35 @@ const std::vector<OpcodeInfo>& AllOpcodes() {
 
 const OpcodeInfo& GetOpcodeInfo(Opcode op) { return AllOpcodes()[static_cast<size_t>(op)]; }
 
+namespace {
+
+// Every ARB opcode name has three characters (checked when the table is built): a name is
+// looked up as one integer, which is cheaper than hashing it (one lookup per instruction).
+constexpr size_t kOpcodeNameSize = 3;
+uint32_t PackOpcodeName(std::string_view name) {
+  uint32_t packed = 0;
+  for (char c : name) packed = (packed << 8) | static_cast<unsigned char>(c);
+  return packed;
+}
+
+}  // namespace
+
 bool LookupOpcode(std::string_view name, Opcode* op) {
-  static const std::unordered_map<std::string_view, Opcode> by_name = [] {
-    std::unordered_map<std::string_view, Opcode> map;
-    for (const OpcodeInfo& info : AllOpcodes()) map.emplace(info.name, info.op);
-    return map;
+  using Entry = std::pair<uint32_t, Opcode>;
+  static const std::vector<Entry> by_name = [] {
+    std::vector<Entry> entries;
+    for (const OpcodeInfo& info : AllOpcodes()) {
+      assert(info.name.size() == kOpcodeNameSize);
+      entries.emplace_back(PackOpcodeName(info.name), info.op);
+    }
+    std::sort(entries.begin(), entries.end());
+    return entries;
   }();
-  auto it = by_name.find(name);
-  if (it == by_name.end()) return false;
+  if (name.size() != kOpcodeNameSize) return false;
+  uint32_t key = PackOpcodeName(name);
+  auto it = std::lower_bound(by_name.begin(), by_name.end(), key,
+                             [](const Entry& e, uint32_t k) { return e.first < k; });
+  if (it == by_name.end() || it->first != key) return false;
   *op = it->second;
   return true;
 }

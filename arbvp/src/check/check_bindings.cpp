@@ -13,7 +13,9 @@ namespace {
 // Checks a selector `index` (a count of index + 1) against `key`.
 void CheckSelector(const CheckContext& ctx, const Binding& b, std::string_view key,
                    std::string_view what) {
-  CheckLimit(ctx, key, static_cast<int64_t>(b.index) + 1, 0, Diag::BindingIndexRange, b.selector,
+  int64_t used = static_cast<int64_t>(b.index) + 1;
+  if (used <= QuietLimit(ctx, key, 0)) return;
+  CheckLimit(ctx, key, used, 0, Diag::BindingIndexRange, b.selector,
              fmt::format("{} {}", what, b.index));
 }
 
@@ -221,7 +223,7 @@ void CheckBindings(const CheckContext& ctx) {
           bool generic = b.vertex_attrib == VertexAttrib::Generic;
           int slot = GenericAttribSlot(b);
           if (slot < 0) break;
-          seen[generic ? 1 : 0].emplace(slot, &b);
+          seen[generic ? 1 : 0].try_emplace(slot, &b);
           auto other = seen[generic ? 0 : 1].find(slot);
           if (other != seen[generic ? 0 : 1].end()) {
             compiler::Diagnostic* d = ctx.Report(

@@ -2,9 +2,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cassert>
 #include <set>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 
+#include "../binding_key.h"
 #include "checks.h"
 
 namespace arbiter::arbvp {
@@ -81,40 +85,55 @@ int CountIndirections(const Program& program, std::vector<size_t>* starts) {
   return indirections;
 }
 
-std::string CountKey(const Binding& b, ProgramKind kind) {
-  if (b.kind == BindingKind::Constant) {
-    // Numerically equal constants count once (so -0 equals 0).
-    return fmt::format("const {} {} {} {}", b.value[0] + 0.0f, b.value[1] + 0.0f, b.value[2] + 0.0f,
-                       b.value[3] + 0.0f);
-  }
-  return BindingName(b, kind);
-}
+// Distinct bindings, as their canonical names tell them apart (BindingName, or for the
+// parameter count numeric equality of constants, so that -0 equals 0), compared by key
+// (binding_key.h) rather than by name: no string per bound vector.
+class DistinctBindings {
+ public:
+  explicit DistinctBindings(bool signed_zero) : signed_zero_(signed_zero) {}
+
+  // True when no binding before was the same.
+  bool Insert(const Binding& b) { return seen_.insert(KeyOf(b, signed_zero_)).second; }
+  size_t size() const { return seen_.size(); }
+
+ private:
+  bool signed_zero_;
+  std::unordered_set<BindingKey, BindingKeyHash> seen_;
+};
 
 // Counts a resource and reports it once at the first count past the spec minimum
 // (portability mode) and once at the first count past the enforced limit.
 class LimitCounter {
  public:
-  LimitCounter(const CheckContext& ctx, std::string key, int reserve, Diag diag)
-      : ctx_(ctx), key_(std::move(key)), reserve_(reserve), diag_(diag) {}
+  LimitCounter(const CheckContext& ctx, std::string_view key, int reserve, Diag diag)
+      : ctx_(ctx),
+        key_(key),
+        reserve_(reserve),
+        diag_(diag),
+        quiet_(QuietLimit(ctx, key_, reserve, /*allow_warning=*/true)),
+        error_(QuietLimit(ctx, key_, reserve, /*allow_warning=*/false)) {}
 
-  void Add(Range range, const std::string& what) {
+  // Counts one more. `describe` returns what is counted ("instruction 129"); it is called
+  // only when a diagnostic may be due, as building it for every count is most of the work.
+  template <typename Describe>
+  void Add(Range range, const Describe& describe) {
     ++count_;
-    if (failed_) return;
-    const compiler::LimitProfile* enforced =
-        ctx_.profile ? ctx_.profile : compiler::BuiltinProfile("mesa");
-    bool over_error = count_ > enforced->Get(key_) - reserve_;
+    if (failed_ || count_ <= quiet_) return;
+    bool over_error = count_ > error_;
     if (warned_ && !over_error) return;
     size_t before = ctx_.sink->diagnostics().size();
-    failed_ = !CheckLimit(ctx_, key_, count_, reserve_, diag_, range, what, !warned_);
+    failed_ = !CheckLimit(ctx_, key_, count_, reserve_, diag_, range, describe(), !warned_);
     if (ctx_.sink->diagnostics().size() != before) warned_ = true;
   }
   int64_t count() const { return count_; }
 
  private:
   const CheckContext& ctx_;
-  std::string key_;
+  std::string_view key_;  // static storage
   int reserve_;
   Diag diag_;
+  int64_t quiet_;  // counts up to this one report nothing
+  int64_t error_;  // counts past this one are errors
   int64_t count_ = 0;
   bool warned_ = false;
   bool failed_ = false;
@@ -122,15 +141,61 @@ class LimitCounter {
 
 }  // namespace
 
-std::string CheckContext::StageKey(std::string_view name) const {
-  return fmt::format("{}.{}", vp() ? "arbvp" : "arbfp", name);
+int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve, bool allow_warning) {
+  int64_t limit = ctx.EnforcedLimit(key);
+  if (ctx.profile || !allow_warning) return limit - reserve;
+  return std::min(limit, CheckContext::SpecMinLimit(key)) - reserve;
 }
+
+std::string_view CheckContext::StageKey(std::string_view name) const {
+  std::string_view prefix = vp() ? "arbvp." : "arbfp.";
+  for (const compiler::LimitKey& k : compiler::LimitKeys()) {
+    if (k.key.size() == prefix.size() + name.size() && k.key.starts_with(prefix) &&
+        k.key.ends_with(name)) {
+      return k.key;
+    }
+  }
+  assert(false && "unknown limit key");
+  return name;
+}
+
+namespace {
+
+struct BuiltinLimits {
+  int64_t mesa = 0;
+  int64_t spec_min = 0;
+};
+
+// The built-in profiles' values, by key: one hash lookup where LimitProfile::Get searches a
+// map of strings, for a limit the checks look up for every binding of every program.
+const BuiltinLimits& BuiltinLimitsOf(std::string_view key) {
+  static const std::unordered_map<std::string_view, BuiltinLimits> table = [] {
+    std::unordered_map<std::string_view, BuiltinLimits> values;
+    for (const compiler::LimitKey& k : compiler::LimitKeys()) {
+      values.emplace(k.key, BuiltinLimits{compiler::BuiltinProfile("mesa")->Get(k.key),
+                                          compiler::BuiltinProfile("spec-min")->Get(k.key)});
+    }
+    return values;
+  }();
+  static const BuiltinLimits kUnknown;  // what LimitProfile::Get answers (after its assert)
+  auto it = table.find(key);
+  assert(it != table.end() && "unknown limit key");
+  return it != table.end() ? it->second : kUnknown;
+}
+
+}  // namespace
+
+int64_t CheckContext::EnforcedLimit(std::string_view key) const {
+  return profile ? profile->Get(key) : BuiltinLimitsOf(key).mesa;
+}
+
+int64_t CheckContext::SpecMinLimit(std::string_view key) { return BuiltinLimitsOf(key).spec_min; }
 
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
                 Range range, std::string_view what, bool allow_warning) {
   const compiler::LimitProfile* enforced =
       ctx.profile ? ctx.profile : compiler::BuiltinProfile("mesa");
-  int64_t limit = enforced->Get(key) - reserve;
+  int64_t limit = ctx.EnforcedLimit(key) - reserve;
   std::string reserve_note =
       reserve > 0 ? fmt::format(" ({} reserved by the program's options)", reserve) : "";
   if (used > limit) {
@@ -140,7 +205,7 @@ bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int
     return false;
   }
   if (!ctx.profile && allow_warning) {
-    int64_t minimum = compiler::BuiltinProfile("spec-min")->Get(key) - reserve;
+    int64_t minimum = CheckContext::SpecMinLimit(key) - reserve;
     if (used > minimum) {
       ctx.Report(Diag::LimitPortability, range,
                  fmt::format("{} exceeds the specification's minimum {} = {}{}; "
@@ -166,12 +231,13 @@ void CheckResources(const CheckContext& ctx) {
   stats.alu_instructions = alu;
   stats.tex_instructions = tex;
 
-  auto count_instructions = [&](std::string key, int reserve_n, Diag diag, auto counts,
+  auto count_instructions = [&](std::string_view key, int reserve_n, Diag diag, auto counts,
                                 std::string_view what) {
-    LimitCounter counter(ctx, std::move(key), reserve_n, diag);
+    LimitCounter counter(ctx, key, reserve_n, diag);
     for (const Instruction& inst : program.instructions) {
-      if (counts(inst))
-        counter.Add(inst.opcode_range, fmt::format("{} {}", what, counter.count() + 1));
+      if (counts(inst)) {
+        counter.Add(inst.opcode_range, [&] { return fmt::format("{} {}", what, counter.count()); });
+      }
     }
   };
   auto any = [](const Instruction&) { return true; };
@@ -192,10 +258,11 @@ void CheckResources(const CheckContext& ctx) {
     stats.tex_indirections = CountIndirections(program, &starts);
     // Indirection k (k >= 2) starts at instruction starts[k - 2].
     LimitCounter indirections(ctx, "arbfp.max_tex_indirections", 0, Diag::LimitTexIndirections);
-    indirections.Add(Range{}, "");  // the first indirection is free of any instruction
+    // The first indirection is free of any instruction.
+    indirections.Add(Range{}, [] { return std::string(); });
     for (size_t start : starts) {
       indirections.Add(program.instructions[start].opcode_range,
-                       fmt::format("texture indirection {}", indirections.count() + 1));
+                       [&] { return fmt::format("texture indirection {}", indirections.count()); });
     }
   }
 
@@ -206,26 +273,30 @@ void CheckResources(const CheckContext& ctx) {
   LimitCounter attribs(ctx, ctx.StageKey("max_attribs"), reserve.attribs, Diag::LimitAttributes);
   LimitCounter params(ctx, ctx.StageKey("max_parameters"), reserve.parameters,
                       Diag::LimitParameters);
-  std::set<std::string> seen_attribs;
-  std::set<std::string> seen_params;
-  std::set<std::string> outputs;
+  DistinctBindings seen_attribs(/*signed_zero=*/true);
+  DistinctBindings seen_params(/*signed_zero=*/false);
+  DistinctBindings outputs(/*signed_zero=*/true);
   std::set<int> relative = RelativelyAddressed(program);
   for (size_t v = 0; v < program.vars.size(); ++v) {
     const Variable& var = program.vars[v];
     switch (var.kind) {
       case VarKind::Temp:
-        temps.Add(var.decl, fmt::format("temporary '{}' (number {})", var.name, temps.count() + 1));
+        temps.Add(var.decl, [&] {
+          return fmt::format("temporary '{}' (number {})", var.name, temps.count());
+        });
         break;
       case VarKind::Address:
-        addresses.Add(var.decl, fmt::format("address register '{}' (number {})", var.name,
-                                            addresses.count() + 1));
+        addresses.Add(var.decl, [&] {
+          return fmt::format("address register '{}' (number {})", var.name, addresses.count());
+        });
         break;
       case VarKind::Attrib:
         for (const Binding& b : var.bindings) {
-          std::string name = BindingName(b, program.kind);
-          if (seen_attribs.insert(name).second) {
-            attribs.Add(var.decl,
-                        fmt::format("attribute binding {} ('{}')", attribs.count() + 1, name));
+          if (seen_attribs.Insert(b)) {
+            attribs.Add(var.decl, [&] {
+              return fmt::format("attribute binding {} ('{}')", attribs.count(),
+                                 BindingName(b, program.kind));
+            });
           }
         }
         break;
@@ -234,13 +305,14 @@ void CheckResources(const CheckContext& ctx) {
           // ARBvp 2.14.3.7: each constant of a relatively addressed array counts, even when
           // identical to another; state vectors and other constants count once.
           bool always = b.kind == BindingKind::Constant && relative.count(static_cast<int>(v));
-          if (seen_params.insert(CountKey(b, program.kind)).second || always) {
-            params.Add(var.decl, fmt::format("parameter binding {}", params.count() + 1));
+          if (seen_params.Insert(b) || always) {
+            params.Add(var.decl,
+                       [&] { return fmt::format("parameter binding {}", params.count()); });
           }
         }
         break;
       case VarKind::Output:
-        for (const Binding& b : var.bindings) outputs.insert(BindingName(b, program.kind));
+        for (const Binding& b : var.bindings) outputs.Insert(b);
         break;
     }
   }

@@ -13,8 +13,10 @@ void CheckTextures(const CheckContext& ctx) {
   bool shadow_option = ctx.program.HasOption(OptionId::FragmentProgramShadow);
   for (const Instruction& inst : ctx.program.instructions) {
     if (GetOpcodeInfo(inst.op).signature != OpSignature::Sample) continue;
-    if (!CheckLimit(ctx, "arbfp.max_texture_image_units", int64_t{inst.tex_unit} + 1, 0,
-                    Diag::BindingIndexRange, inst.unit_range,
+    constexpr std::string_view kUnits = "arbfp.max_texture_image_units";
+    int64_t used = int64_t{inst.tex_unit} + 1;
+    if (used > QuietLimit(ctx, kUnits, 0) &&
+        !CheckLimit(ctx, kUnits, used, 0, Diag::BindingIndexRange, inst.unit_range,
                     fmt::format("texture image unit {}", inst.tex_unit))) {
       continue;
     }

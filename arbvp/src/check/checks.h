@@ -20,13 +20,15 @@ struct CheckContext {
   const compiler::LimitProfile* profile;
   Stats* stats;
   int errors_before = 0;  // the sink's error count before this program
-
   bool vp() const { return program.kind == ProgramKind::Vertex; }
   compiler::Diagnostic* Report(Diag diag, Range range, std::string message) const {
     return sink->Report(Info(diag), &source, range, std::move(message));
   }
   // The limit key of a stage-specific resource: "arbvp.<name>" or "arbfp.<name>".
-  std::string StageKey(std::string_view name) const;
+  std::string_view StageKey(std::string_view name) const;
+  // The value of limit `key` in the enforced profile (--limits, else mesa), and in spec-min.
+  int64_t EnforcedLimit(std::string_view key) const;
+  static int64_t SpecMinLimit(std::string_view key);
 };
 
 // Checks `used` against the limit `key` (minus `reserve`, what options take for
@@ -35,6 +37,11 @@ struct CheckContext {
 // portability mode. Returns false when an error was reported.
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
                 Range range, std::string_view what, bool allow_warning = true);
+
+// The largest `used` that CheckLimit passes without a diagnostic; hot callers compare with
+// it first so that they build the message only when one may be reported.
+int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve,
+                   bool allow_warning = true);
 
 // The variables some instruction indexes with an address register.
 std::set<int> RelativelyAddressed(const Program& program);
