@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Whole-process comparison of `arbiter check` with glslangValidator on the same GLSL files,
-# in one hyperfine run: one process for all files (both tools), and one glslangValidator
-# process per file. Usage: bench/compare-glsl.sh [DIR] (default corpus/glsl); needs a
+# in one hyperfine run: one process for all files (both tools; arbiter with -j 1 and 2), then
+# one glslangValidator process per file. Usage: bench/compare-glsl.sh [DIR] (default corpus/glsl); needs a
 # release build (cmake --preset release && cmake --build --preset release).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -18,7 +18,9 @@ echo "${#files[@]} files under $dir"
 # so the closest comparison is compile-only for glslangValidator (arbiter does more work).
 hyperfine -N -i --warmup 2 --runs "${RUNS:-10}" --export-markdown "${EXPORT:-/dev/null}" \
   -n "arbiter check -j 1 (all files)" "$arbiter check -j 1 ${files[*]}" \
-  -n "arbiter check (all files, -j cores)" "$arbiter check ${files[*]}" \
-  -n "glslangValidator -d (all files)" "glslangValidator -d ${files[*]}" \
+  -n "arbiter check -j 2 (all files)" "$arbiter check -j 2 ${files[*]}" \
+  -n "glslangValidator -d (all files)" "glslangValidator -d ${files[*]}"
+# One process per file takes about 40 s a run: fewer runs.
+hyperfine -N -i --runs "${PER_FILE_RUNS:-3}" \
   -n "glslangValidator -d (one process per file)" \
   "bash -c 'while read -r f; do glslangValidator -d \"\$f\" >/dev/null; done < $list'"

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "cli.h"
 
@@ -28,9 +29,10 @@ void PrintReports(const std::vector<compiler::FileReport>& reports, const Common
   } else {
     compiler::TextOptions text;
     text.color = UseColor(options.color);
-    for (const compiler::FileReport& report : reports) {
-      std::fputs(compiler::RenderText(report, text).c_str(), stderr);
-    }
+    // One write: stderr is unbuffered, and a write per file costs more than rendering it.
+    std::string out;
+    for (const compiler::FileReport& report : reports) out += compiler::RenderText(report, text);
+    std::fwrite(out.data(), 1, out.size(), stderr);
   }
   std::fflush(stdout);
 }
