@@ -1,6 +1,7 @@
 // Throughput of the ARB front end, stage by stage: lexing only (BM_Lex*), lexing and parsing
 // (BM_Parse*), and parsing and checking (BM_Check*, what `arbiter check` does), over the
-// whole corpus and over one large program.
+// whole corpus, over its valid programs alone (what a build pipeline mostly checks) and over
+// one large program.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -20,9 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> LoadCorpus() {
+// The programs under corpus/arb/<subdir> (all of corpus/arb when subdir is empty).
+std::vector<std::string> LoadCorpus(std::string_view subdir = {}) {
   std::vector<std::string> texts;
-  fs::path root = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb";
+  fs::path root = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb" / subdir;
   std::vector<fs::path> paths;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     std::string ext = entry.path().extension().string();
@@ -130,6 +132,10 @@ const std::vector<std::string>& Corpus() {
   static const std::vector<std::string> corpus = LoadCorpus();
   return corpus;
 }
+const std::vector<std::string>& ValidCorpus() {
+  static const std::vector<std::string> valid = LoadCorpus("valid");
+  return valid;
+}
 const std::vector<std::string>& Large() {
   static const std::vector<std::string> large = {LargeProgram()};
   return large;
@@ -149,6 +155,9 @@ BENCHMARK(BM_ParseCorpus)->Unit(benchmark::kMillisecond);
 
 void BM_CheckCorpus(benchmark::State& state) { CheckAll(state, Corpus()); }
 BENCHMARK(BM_CheckCorpus)->Unit(benchmark::kMillisecond);
+
+void BM_CheckValidCorpus(benchmark::State& state) { CheckAll(state, ValidCorpus()); }
+BENCHMARK(BM_CheckValidCorpus)->Unit(benchmark::kMillisecond);
 
 void BM_LexLargeProgram(benchmark::State& state) {
   static const Headed programs = WithHeader(Large());

@@ -141,12 +141,6 @@ class LimitCounter {
 
 }  // namespace
 
-int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve, bool allow_warning) {
-  int64_t limit = ctx.EnforcedLimit(key);
-  if (ctx.profile || !allow_warning) return limit - reserve;
-  return std::min(limit, CheckContext::SpecMinLimit(key)) - reserve;
-}
-
 std::string_view CheckContext::StageKey(std::string_view name) const {
   std::string_view prefix = vp() ? "arbvp." : "arbfp.";
   for (const compiler::LimitKey& k : compiler::LimitKeys()) {
@@ -190,6 +184,14 @@ int64_t CheckContext::EnforcedLimit(std::string_view key) const {
 }
 
 int64_t CheckContext::SpecMinLimit(std::string_view key) { return BuiltinLimitsOf(key).spec_min; }
+
+// One table lookup for both built-in limits: every limit counter of every program asks.
+int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve, bool allow_warning) {
+  if (ctx.profile) return ctx.profile->Get(key) - reserve;
+  const BuiltinLimits& builtin = BuiltinLimitsOf(key);
+  if (!allow_warning) return builtin.mesa - reserve;
+  return std::min(builtin.mesa, builtin.spec_min) - reserve;
+}
 
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
                 Range range, std::string_view what, bool allow_warning) {
