@@ -163,13 +163,15 @@ ShaderTestResult FromJson(const std::string& path, const nlohmann::json& j) {
   return r;
 }
 
-// The job that runs one chunk on one GL context; its payload is a JSON array of results.
-WorkerJob ChunkJob(const std::vector<std::string>& paths, Chunk chunk, const RunOptions& options) {
-  return [&paths, chunk, &options](std::string* payload, std::string* job_error) {
+// The job that runs tests [first, first + count) on one GL context; its payload is a JSON array of
+// results.
+WorkerJob ChunkJob(const std::vector<std::string>& paths, size_t first, size_t count,
+                   const RunOptions& options) {
+  return [&paths, first, count, &options](std::string* payload, std::string* job_error) {
     auto runner = std::make_unique<Runner>();
     if (!runner->Create(options, job_error)) return false;
     nlohmann::json out = nlohmann::json::array();
-    for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+    for (size_t i = first; i < first + count; ++i) {
       const std::string png = options.png_dir.empty() || i >= options.png_names.size()
                                   ? ""
                                   : options.png_dir + "/" + options.png_names[i];
@@ -183,47 +185,6 @@ WorkerJob ChunkJob(const std::vector<std::string>& paths, Chunk chunk, const Run
   };
 }
 
-// Runs the chunks, -j at a time; fills their results and returns the chunks whose worker
-// gave no answer (crashed, hung, out of memory), with the reason in `errors`.
-std::vector<Chunk> RunChunks(const std::vector<std::string>& paths,
-                             const std::vector<Chunk>& chunks, const RunOptions& options,
-                             std::vector<ShaderTestResult>* results,
-                             std::vector<std::string>* errors) {
-  const std::vector<WorkerResult> outcomes =
-      RunChunksInWorkers(options.limits, chunks, static_cast<size_t>(std::max(1, options.jobs)),
-                         [&](const Chunk& chunk) { return ChunkJob(paths, chunk, options); });
-  std::vector<Chunk> failed;
-  errors->clear();
-  for (size_t c = 0; c < chunks.size(); ++c) {
-    const Chunk& chunk = chunks[c];
-    const WorkerResult& outcome = outcomes[c];
-    if (outcome.status == WorkerStatus::JobFailed) {
-      // No GL context: every test of the chunk fails with the reason.
-      for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
-        (*results)[i].path = paths[i];
-        (*results)[i].message = fmt::format("{}: {}", paths[i], outcome.error);
-        (*results)[i].environment = true;
-      }
-      continue;
-    }
-    nlohmann::json json;
-    if (outcome.status == WorkerStatus::Ok) {
-      json = nlohmann::json::parse(outcome.payload, nullptr, /*allow_exceptions=*/false);
-    }
-    if (!json.is_array() || json.size() != chunk.count) {
-      failed.push_back(chunk);
-      errors->push_back(outcome.status == WorkerStatus::Ok
-                            ? "the worker's answer is not the expected JSON"
-                            : outcome.error);
-      continue;
-    }
-    for (size_t i = 0; i < chunk.count; ++i) {
-      (*results)[chunk.first + i] = FromJson(paths[chunk.first + i], json[i]);
-    }
-  }
-  return failed;
-}
-
 }  // namespace
 
 std::vector<ShaderTestResult> RunShaderTests(const std::vector<std::string>& paths,
@@ -231,23 +192,28 @@ std::vector<ShaderTestResult> RunShaderTests(const std::vector<std::string>& pat
   std::vector<ShaderTestResult> results(paths.size());
   if (paths.empty()) return results;
   if (options.exec.backend == Backend::OSMesa) exec::PreloadOsMesa();
-  const size_t jobs = static_cast<size_t>(std::max(1, options.jobs));
+  ChunkedBatch batch;
+  batch.items = paths.size();
+  batch.workers = static_cast<size_t>(std::max(1, options.jobs));
   // Small chunks: a test's cost varies with its draws, so many chunks balance the workers.
-  const std::vector<Chunk> chunks = PlanChunks(paths.size(), jobs, 4, 16);
-  std::vector<std::string> errors;
-  std::vector<Chunk> failed = RunChunks(paths, chunks, options, &results, &errors);
-  // A worker that died took its whole chunk: each of its tests again alone, so that only
-  // the guilty one fails.
-  const std::vector<Chunk> singles = Singles(failed);
-  if (!singles.empty()) {
-    std::vector<Chunk> guilty = RunChunks(paths, singles, options, &results, &errors);
-    for (size_t g = 0; g < guilty.size(); ++g) {
-      ShaderTestResult& r = results[guilty[g].first];
-      r = ShaderTestResult{};
-      r.path = paths[guilty[g].first];
-      r.message = fmt::format("{}: {}", r.path, errors[g]);
-    }
-  }
+  batch.per_worker = 4;
+  batch.largest = 16;
+  batch.limits = options.limits;
+  batch.make_job = [&](size_t first, size_t count) {
+    return ChunkJob(paths, first, count, options);
+  };
+  batch.read = [&](size_t i, const nlohmann::json& entry) {
+    results[i] = FromJson(paths[i], entry);
+    return true;
+  };
+  batch.failed = [&](size_t i, const std::string& error, bool environment) {
+    ShaderTestResult& r = results[i];
+    r = ShaderTestResult{};
+    r.path = paths[i];
+    r.message = fmt::format("{}: {}", paths[i], error);
+    r.environment = environment;  // no GL context: not the test's fault
+  };
+  RunChunked(batch);
   return results;
 }
 

@@ -135,14 +135,14 @@ Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
   return verdict;
 }
 
-// The job of one chunk: one GL context, the chunk's verdicts as a JSON array.
-WorkerJob ChunkJob(const std::vector<VerifySubject>& subjects, Chunk chunk,
+// The job of subjects [first, first + count): one GL context, their verdicts as a JSON array.
+WorkerJob ChunkJob(const std::vector<VerifySubject>& subjects, size_t first, size_t count,
                    const VerifyOptions& options) {
-  return [&subjects, chunk, &options](std::string* payload, std::string* job_error) {
+  return [&subjects, first, count, &options](std::string* payload, std::string* job_error) {
     std::unique_ptr<ArbExecutor> executor = CreateArbExecutor(options.exec, job_error);
     if (!executor) return false;
     nlohmann::json out = nlohmann::json::array();
-    for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+    for (size_t i = first; i < first + count; ++i) {
       out.push_back(VerdictToJson(VerifyOne(executor.get(), subjects[i], options)));
     }
     *payload = out.dump();
@@ -153,47 +153,6 @@ WorkerJob ChunkJob(const std::vector<VerifySubject>& subjects, Chunk chunk,
   };
 }
 
-// Runs the chunks, -j at a time, filling their verdicts; returns the chunks whose worker
-// gave no answer (crashed, hung, out of memory), with the reason in `errors`.
-std::vector<Chunk> VerifyChunks(const std::vector<VerifySubject>& subjects,
-                                const std::vector<Chunk>& chunks, const VerifyOptions& options,
-                                std::vector<Verdict>* verdicts, std::vector<std::string>* errors) {
-  const std::vector<WorkerResult> outcomes =
-      RunChunksInWorkers(options.limits, chunks, static_cast<size_t>(std::max(1, options.jobs)),
-                         [&](const Chunk& chunk) { return ChunkJob(subjects, chunk, options); });
-  std::vector<Chunk> failed;
-  errors->clear();
-  for (size_t c = 0; c < chunks.size(); ++c) {
-    const Chunk& chunk = chunks[c];
-    const WorkerResult& outcome = outcomes[c];
-    if (outcome.status == WorkerStatus::JobFailed) {
-      // No GL context: nothing of the chunk ran; the interpreter's counts still hold.
-      for (size_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
-        Verdict& verdict = (*verdicts)[i];
-        verdict.name = subjects[i].name;
-        CountUntestable(Prepare(subjects[i], options), &verdict);
-        verdict.error = MesaError(options, outcome.error);
-      }
-      continue;
-    }
-    nlohmann::json json;
-    if (outcome.status == WorkerStatus::Ok) {
-      json = nlohmann::json::parse(outcome.payload, nullptr, /*allow_exceptions=*/false);
-    }
-    bool read = json.is_array() && json.size() == chunk.count;
-    for (size_t i = 0; read && i < chunk.count; ++i) {
-      read = VerdictFromJson(json[i], &(*verdicts)[chunk.first + i]);
-    }
-    if (!read) {
-      failed.push_back(chunk);
-      errors->push_back(outcome.status == WorkerStatus::Ok
-                            ? "the worker's answer is not the expected JSON"
-                            : outcome.error);
-    }
-  }
-  return failed;
-}
-
 }  // namespace
 
 std::vector<Verdict> Verify(const std::vector<VerifySubject>& subjects,
@@ -201,26 +160,29 @@ std::vector<Verdict> Verify(const std::vector<VerifySubject>& subjects,
   std::vector<Verdict> verdicts(subjects.size());
   if (subjects.empty()) return verdicts;
   if (options.exec.backend == Backend::OSMesa) exec::PreloadOsMesa();
-  const size_t jobs = static_cast<size_t>(std::max(1, options.jobs));
+  ChunkedBatch batch;
+  batch.items = subjects.size();
+  batch.workers = static_cast<size_t>(std::max(1, options.jobs));
   // Two chunks per worker: each pays a GL context (a fifth of the work of a 50-program
   // chunk on softpipe), and programs cost about the same.
-  const std::vector<Chunk> chunks = PlanChunks(subjects.size(), jobs, 2, 256);
-  std::vector<std::string> errors;
-  std::vector<Chunk> failed = VerifyChunks(subjects, chunks, options, &verdicts, &errors);
-  // A worker that died took its whole chunk: each of its programs again alone, so that only
-  // the guilty one gets the error.
-  const std::vector<Chunk> singles = Singles(failed);
-  if (singles.empty()) return verdicts;
-  std::vector<Chunk> guilty = VerifyChunks(subjects, singles, options, &verdicts, &errors);
-  for (size_t g = 0; g < guilty.size(); ++g) {
-    const size_t s = guilty[g].first;
+  batch.per_worker = 2;
+  batch.largest = 256;
+  batch.limits = options.limits;
+  batch.make_job = [&](size_t first, size_t count) {
+    return ChunkJob(subjects, first, count, options);
+  };
+  batch.read = [&](size_t i, const nlohmann::json& entry) {
+    return VerdictFromJson(entry, &verdicts[i]);
+  };
+  batch.failed = [&](size_t i, const std::string& error, bool /*environment*/) {
     // The interpreter's share of the verdict, which needs no driver.
-    Verdict& verdict = verdicts[s];
+    Verdict& verdict = verdicts[i];
     verdict = Verdict{};
-    verdict.name = subjects[s].name;
-    CountUntestable(Prepare(subjects[s], options), &verdict);
-    verdict.error = MesaError(options, errors[g]);
-  }
+    verdict.name = subjects[i].name;
+    CountUntestable(Prepare(subjects[i], options), &verdict);
+    verdict.error = MesaError(options, error);
+  };
+  RunChunked(batch);
   return verdicts;
 }
 
