@@ -3,12 +3,14 @@
 # programs (bench/mesa_load_arb.cpp: one OSMesa softpipe context, glProgramStringARB per
 # program), in one hyperfine run; then peak memory. Usage: bench/compare-arb.sh [DIR]
 # (default corpus/arb); needs a release build (cmake --preset release && cmake --build
-# --preset release). RUNS (default 20) and EXPORT (a markdown file) as for compare-glsl.sh.
+# --preset release; BUILD names another build folder). RUNS (default 20) and EXPORT (a
+# markdown file) as for compare-glsl.sh.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 dir=${1:-corpus/arb}
-arbiter=build/release/cli/arbiter
-mesa=build/release/bench/mesa_load_arb
+build=${BUILD:-build/release}
+arbiter=$build/cli/arbiter
+mesa=$build/bench/mesa_load_arb
 mapfile -t files < <(find "$dir" -type f \( -name '*.vp' -o -name '*.fp' \) | LC_ALL=C sort)
 (( ${#files[@]} > 0 )) || { echo "no ARB programs under $dir" >&2; exit 1; }
 one=${ONE:-corpus/arb/valid/skinning-four-bones.vp}

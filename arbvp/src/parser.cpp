@@ -8,15 +8,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "diag.h"
+#include "flat_table.h"
 #include "suggest.h"
 
 namespace arbiter::arbvp {
@@ -30,11 +31,53 @@ using compiler::SourceFile;
 // leaves unset (out of range: overflow, underflow) go to strtof, which gives +inf on
 // overflow, as GL would.
 float ParseFloatText(std::string_view text) {
+  // Fast path (Clinger's): digits with at most ten after the point and no exponent, whose
+  // digits read as an integer m below 2^24. m and 10^k are exact floats, and IEEE division
+  // rounds their exact quotient to nearest, as strtof does: the same float, without
+  // from_chars' general algorithm (a large share of parsing constant-heavy programs).
+  static constexpr float kPow10[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
+                                     1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+  if (text.size() <= 12) {
+    uint64_t m = 0;            // 12 digits at most: no overflow
+    int fraction_digits = -1;  // -1: no point yet
+    bool simple = !text.empty();
+    for (char c : text) {
+      if (c >= '0' && c <= '9') {
+        m = m * 10 + static_cast<uint64_t>(c - '0');
+        if (fraction_digits >= 0) ++fraction_digits;
+      } else if (c == '.' && fraction_digits < 0) {
+        fraction_digits = 0;
+      } else {
+        simple = false;
+        break;
+      }
+    }
+    if (simple && m < (uint64_t{1} << 24) && fraction_digits <= 10) {
+      return static_cast<float>(m) / kPow10[fraction_digits < 0 ? 0 : fraction_digits];
+    }
+  }
   float value = 0.0f;
   auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec == std::errc()) return value;
   std::string copy(text);
   return std::strtof(copy.c_str(), nullptr);
+}
+
+// True when a number's mantissa (before any exponent) has a digit other than 0: a number
+// that reads as zero only because it underflows.
+bool HasNonZeroDigit(std::string_view text) {
+  for (char c : text) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+// s == word, always inlined: the parser compares words per token, and GCC leaves
+// std::string_view's operator== out of line in this file (a call and a memcmp call per test;
+// with a literal `word` the inlined memcmp is a load and a compare).
+[[gnu::always_inline]] inline bool Is(std::string_view s, std::string_view word) {
+  return s.size() == word.size() && std::memcmp(s.data(), word.data(), word.size()) == 0;
 }
 
 // Lets the symbol table be searched with a string_view (no allocation per lookup). FNV-1a:
@@ -50,7 +93,52 @@ struct StringHash {
 
 struct Symbol {
   int var = -1;  // -1: poisoned (its declaration failed)
-  Range decl;
+  Range decl;    // the declared name: the symbol's key is this range of the text
+};
+
+// The declared names. Entries point into the program text, which outlives the parser: no
+// string and no node per declared name (limit tests declare hundreds).
+class SymbolTable {
+ public:
+  explicit SymbolTable(std::string_view text) : text_(text) {}
+
+  const Symbol* Find(std::string_view name) const {
+    return table_.Find(StringHash{}(name),
+                       [&](const Symbol& s) { return SameName(NameOf(s), name); });
+  }
+  bool Contains(std::string_view name) const { return Find(name) != nullptr; }
+  // Declares the name at `decl` as `var`; an existing entry is replaced when `replace`.
+  void Declare(Range decl, int var, bool replace) {
+    std::string_view name = NameOf(decl);
+    bool inserted = false;
+    Symbol* s = table_.FindOrInsert(
+        StringHash{}(name), [&](const Symbol& e) { return SameName(NameOf(e), name); }, &inserted);
+    if (inserted || replace) *s = {var, decl};
+  }
+  // Every declared name, in no particular order.
+  std::vector<std::string_view> Names() const {
+    std::vector<std::string_view> names;
+    names.reserve(table_.size());
+    table_.ForEach([&](const Symbol& s) { names.push_back(NameOf(s)); });
+    return names;
+  }
+
+ private:
+  // Names are a few characters: a loop beats a call to memcmp.
+  static bool SameName(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i) {
+      if (a[i] != b[i]) return false;
+    }
+    return true;
+  }
+  std::string_view NameOf(Range r) const {
+    return std::string_view(text_.data() + r.begin, r.end - r.begin);  // a token's bounds
+  }
+  std::string_view NameOf(const Symbol& s) const { return NameOf(s.decl); }
+
+  std::string_view text_;
+  FlatTable<Symbol> table_;
 };
 
 constexpr std::string_view kVpKeywords[] = {"ADDRESS", "ALIAS",  "ATTRIB", "END",
@@ -59,6 +147,32 @@ constexpr std::string_view kVpKeywords[] = {"ADDRESS", "ALIAS",  "ATTRIB", "END"
 constexpr std::string_view kFpKeywords[] = {"ALIAS",   "ATTRIB", "END",   "OPTION",
                                             "OUTPUT",  "PARAM",  "TEMP",  "fragment",
                                             "program", "result", "state", "texture"};
+// For each first character, the lengths of the keywords that begin with it (bit n: n
+// characters): IsReservedWord compares a word with the keywords only when one may match.
+struct KeywordLengths {
+  std::array<uint16_t, 128> by_first{};
+};
+template <size_t N>
+constexpr KeywordLengths MakeKeywordLengths(const std::string_view (&keywords)[N]) {
+  KeywordLengths lengths;
+  for (std::string_view k : keywords) {
+    lengths.by_first[static_cast<size_t>(k[0])] |= static_cast<uint16_t>(1u << k.size());
+  }
+  return lengths;
+}
+constexpr KeywordLengths kVpKeywordLengths = MakeKeywordLengths(kVpKeywords);
+constexpr KeywordLengths kFpKeywordLengths = MakeKeywordLengths(kFpKeywords);
+// IsReservedWord rejects other lengths without a look (and the masks hold 16 bits).
+constexpr bool KeywordSizesIn3To8() {
+  for (std::string_view k : kVpKeywords) {
+    if (k.size() < 3 || k.size() > 8) return false;
+  }
+  for (std::string_view k : kFpKeywords) {
+    if (k.size() < 3 || k.size() > 8) return false;
+  }
+  return true;
+}
+static_assert(KeywordSizesIn3To8());
 
 class Parser {
  public:
@@ -68,7 +182,8 @@ class Parser {
         text_(source.text()),
         lexer_(source, header.end, sink),
         kind_(kind),
-        sink_(sink) {}
+        sink_(sink),
+        symbols_(text_) {}
 
   std::unique_ptr<Program> Run(Range header) {
     program_ = std::make_unique<Program>();
@@ -109,18 +224,25 @@ class Parser {
   }
 
   // Token pos_ + ahead; Eof past the end. A reference stays valid until a few tokens later.
-  const Token& Peek(size_t ahead = 0) {
+  // The token helpers below are always inlined: they run several times per token.
+  [[gnu::always_inline]] const Token& Peek(size_t ahead = 0) {
     size_t i = pos_ + ahead;
     if (i >= fetched_) [[unlikely]]
       Fetch(i);
-    return window_[std::min(i, eof_index_) % kWindow];
+    return window_[i % kWindow];
   }
   // Lexes up to token i (or Eof), and on as far as the window allows: lexing a batch of
-  // tokens per call keeps the call out of most Peeks.
+  // tokens per call keeps the call out of most Peeks. Past the Eof token come copies of it,
+  // so that Peek needs no bounds check.
   [[gnu::noinline]] void Fetch(size_t i) {
     size_t last = std::max(i, pos_ + kWindow - 3);  // keeps tokens pos_ - 2 on intact
-    while (fetched_ <= last && fetched_ <= eof_index_) {
+    while (fetched_ <= last) {
       size_t slot = fetched_ % kWindow;
+      if (fetched_ > eof_index_) {
+        window_[slot] = window_[eof_index_ % kWindow];  // an Eof token (copies included)
+        ++fetched_;
+        continue;
+      }
       size_t count = std::min(last + 1 - fetched_, kWindow - slot);  // contiguous slots
       size_t got = lexer_.Fill(&window_[slot], count);
       fetched_ += got;
@@ -130,17 +252,19 @@ class Parser {
   std::string_view Text(const Token& t) const {
     return std::string_view(text_.data() + t.begin, t.end - t.begin);  // the lexer's bounds
   }
-  bool PeekIs(Tok kind, size_t ahead = 0) { return Peek(ahead).kind == kind; }
-  bool PeekIdent(std::string_view word, size_t ahead = 0) {
-    return Peek(ahead).kind == Tok::Ident && Text(Peek(ahead)) == word;
+  [[gnu::always_inline]] bool PeekIs(Tok kind, size_t ahead = 0) {
+    return Peek(ahead).kind == kind;
   }
-  Token Advance() {
+  bool PeekIdent(std::string_view word, size_t ahead = 0) {
+    return Peek(ahead).kind == Tok::Ident && Is(Text(Peek(ahead)), word);
+  }
+  [[gnu::always_inline]] Token Advance() {
     Token t = Peek();
     if (pos_ < eof_index_) ++pos_;
     last_end_ = t.end;
     return t;
   }
-  bool Accept(Tok kind) {
+  [[gnu::always_inline]] bool Accept(Tok kind) {
     if (!PeekIs(kind)) return false;
     Advance();
     return true;
@@ -173,16 +297,17 @@ class Parser {
                 fmt::format("expected {}, found {}", what, Describe(t)));
   }
   // Consumes the next token into *out (when given).
-  bool Take(Token* out) {
+  [[gnu::always_inline]] bool Take(Token* out) {
     Token t = Advance();
     if (out) *out = t;
     return true;
   }
-  [[nodiscard]] bool Expect(Tok kind, std::string_view what, Token* out = nullptr) {
+  [[nodiscard, gnu::always_inline]] bool Expect(Tok kind, std::string_view what,
+                                                Token* out = nullptr) {
     if (!PeekIs(kind)) return FailExpected(what);
     return Take(out);
   }
-  [[nodiscard]] bool ExpectIdent(std::string_view what, Token* out) {
+  [[nodiscard, gnu::always_inline]] bool ExpectIdent(std::string_view what, Token* out) {
     return Expect(Tok::Ident, what, out);
   }
   // Expects one of `words` (an identifier); reports the alternatives otherwise.
@@ -191,7 +316,7 @@ class Parser {
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
       for (std::string_view w : word_list) {
-        if (Text(t) == w) return Take(out);
+        if (Is(Text(t), w)) return Take(out);
       }
     }
     return ExpectWordSlow(std::vector<std::string_view>(word_list), context, out);
@@ -201,7 +326,7 @@ class Parser {
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
       for (std::string_view w : words) {
-        if (Text(t) == w) return Take(out);
+        if (Is(Text(t), w)) return Take(out);
       }
       std::string hint = ClosestMatch(Text(t), words);
       return Fail(
@@ -244,7 +369,7 @@ class Parser {
                "program ends without 'END'; every program must end with the END statement");
         return;
       }
-      if (t.kind == Tok::Ident && Text(t) == "END") {
+      if (t.kind == Tok::Ident && Is(Text(t), "END")) {
         program_->end = RangeOf(Advance());
         if (!PeekIs(Tok::Eof)) {
           Report(Diag::SyntaxAfterEnd, RangeOf(Peek()),
@@ -256,7 +381,7 @@ class Parser {
       }
       size_t start = pos_;
       bool ok;
-      if (t.kind == Tok::Ident && Text(t) == "OPTION") {
+      if (t.kind == Tok::Ident && Is(Text(t), "OPTION")) {
         ok = ParseOption(seen_statement);
       } else {
         seen_statement = true;
@@ -288,11 +413,11 @@ class Parser {
   bool StartsStatement(const Token& t) const {
     if (t.kind != Tok::Ident) return false;
     std::string_view s = Text(t);
-    if (s == "END" || s == "OPTION" || s == "ATTRIB" || s == "PARAM" || s == "TEMP" ||
-        s == "ADDRESS" || s == "OUTPUT" || s == "ALIAS")
+    if (Is(s, "END") || Is(s, "OPTION") || Is(s, "ATTRIB") || Is(s, "PARAM") || Is(s, "TEMP") ||
+        Is(s, "ADDRESS") || Is(s, "OUTPUT") || Is(s, "ALIAS"))
       return true;
     Opcode op;
-    if (s.size() > 4 && s.substr(s.size() - 4) == "_SAT") s.remove_suffix(4);
+    if (s.size() > 4 && Is(s.substr(s.size() - 4), "_SAT")) s.remove_suffix(4);
     return LookupOpcode(s, &op);
   }
 
@@ -330,7 +455,7 @@ class Parser {
       for (const OptionInfo& info : AllOptions()) names.push_back(info.spelling);
       std::string hint = ClosestMatch(Text(name), names);
       std::string why;
-      if (Text(name).substr(0, 3) == "NV_") {
+      if (Is(Text(name).substr(0, 3), "NV_")) {
         why = "; NV program options are not supported";
       } else if (!hint.empty()) {
         why = fmt::format(" (did you mean '{}'?)", hint);
@@ -348,19 +473,19 @@ class Parser {
     const Token& t = Peek();
     if (t.kind != Tok::Ident) return FailExpected("an instruction or a declaration");
     std::string_view word = Text(t);
-    if (word == "ATTRIB") return ParseAttribStatement();
-    if (word == "PARAM") return ParseParamStatement();
-    if (word == "TEMP") return ParseVarListStatement(VarKind::Temp);
-    if (word == "ADDRESS") {
-      if (fp() && !symbols_.count("ADDRESS")) {
+    if (Is(word, "ATTRIB")) return ParseAttribStatement();
+    if (Is(word, "PARAM")) return ParseParamStatement();
+    if (Is(word, "TEMP")) return ParseVarListStatement(VarKind::Temp);
+    if (Is(word, "ADDRESS")) {
+      if (fp() && !symbols_.Contains("ADDRESS")) {
         return Fail(Diag::SyntaxStatementStage, RangeOf(t),
                     "ADDRESS declarations exist only in vertex programs: fragment programs have "
                     "no address registers");
       }
       if (vp()) return ParseVarListStatement(VarKind::Address);
     }
-    if (word == "OUTPUT") return ParseOutputStatement();
-    if (word == "ALIAS") return ParseAliasStatement();
+    if (Is(word, "OUTPUT")) return ParseOutputStatement();
+    if (Is(word, "ALIAS")) return ParseAliasStatement();
     return ParseInstruction();
   }
 
@@ -374,14 +499,13 @@ class Parser {
       return Fail(Diag::SyntaxReservedName, RangeOf(*name),
                   fmt::format("'{}' is a reserved word and cannot name a variable", word));
     }
-    auto it = symbols_.find(word);
-    *fresh = it == symbols_.end();
+    const Symbol* taken = symbols_.Find(word);
+    *fresh = taken == nullptr;
     if (!*fresh) {
+      Range first = taken->decl;
       compiler::Diagnostic* d = ReportDiagnostic(Diag::DeclRedeclared, RangeOf(*name),
                                                  fmt::format("redeclaration of '{}'", word));
-      if (d)
-        d->notes.push_back(
-            {&source_, it->second.decl, fmt::format("'{}' first declared here", word)});
+      if (d) d->notes.push_back({&source_, first, fmt::format("'{}' first declared here", word)});
     }
     return true;
   }
@@ -389,41 +513,52 @@ class Parser {
   int AddVariable(Variable var, const Token* name) {
     int index = static_cast<int>(program_->vars.size());
     program_->vars.push_back(std::move(var));
-    if (name) symbols_[std::string(Text(*name))] = {index, RangeOf(*name)};
+    if (name) symbols_.Declare(RangeOf(*name), index, /*replace=*/true);
     return index;
   }
-  void Poison(const Token& name) {
-    symbols_.emplace(std::string(Text(name)), Symbol{-1, RangeOf(name)});
+  // AddVariable of a variable with at most one binding, built in place: no temporary
+  // Variable to move and destroy (limit tests declare hundreds). `name` is null for an
+  // operand's own binding, declared at the binding's text.
+  int AddSimpleVariable(VarKind kind, const Token* name, const Binding* binding) {
+    int index = static_cast<int>(program_->vars.size());
+    Variable& var = program_->vars.emplace_back();
+    var.kind = kind;
+    if (name) {
+      var.name.assign(Text(*name));
+      var.decl = RangeOf(*name);
+      symbols_.Declare(var.decl, index, /*replace=*/true);
+    } else {
+      var.decl = binding->range;
+    }
+    if (binding) var.bindings.push_back(*binding);
+    return index;
   }
+  void Poison(const Token& name) { symbols_.Declare(RangeOf(name), -1, /*replace=*/false); }
 
   // Looks up <establishedName>; reports undeclared names (with a suggestion).
   [[nodiscard]] bool ResolveName(const Token& name, int* var) {
-    auto it = symbols_.find(Text(name));
-    if (it == symbols_.end()) {
-      std::vector<std::string_view> names;
-      for (const auto& [n, s] : symbols_) names.push_back(n);
-      std::sort(names.begin(), names.end());
-      std::string hint = ClosestMatch(Text(name), names);
-      return Fail(Diag::DeclUndeclared, RangeOf(name),
-                  fmt::format("use of undeclared identifier '{}'{}", Text(name),
-                              hint.empty() ? "" : fmt::format("; did you mean '{}'?", hint)));
-    }
-    if (it->second.var < 0) return false;  // poisoned: already reported
-    *var = it->second.var;
+    const Symbol* symbol = symbols_.Find(Text(name));
+    if (symbol == nullptr) [[unlikely]]
+      return ReportUndeclared(name);
+    if (symbol->var < 0) return false;  // poisoned: already reported
+    *var = symbol->var;
     return true;
+  }
+  // Out of line: ResolveName stays small. Returns false.
+  [[gnu::noinline]] bool ReportUndeclared(const Token& name) {
+    std::vector<std::string_view> names = symbols_.Names();
+    std::sort(names.begin(), names.end());
+    std::string hint = ClosestMatch(Text(name), names);
+    return Fail(Diag::DeclUndeclared, RangeOf(name),
+                fmt::format("use of undeclared identifier '{}'{}", Text(name),
+                            hint.empty() ? "" : fmt::format("; did you mean '{}'?", hint)));
   }
 
   // ---- declarations ----------------------------------------------------------------------
 
   // Declares the variable of an ATTRIB or OUTPUT statement (unless its name was taken).
   void AddBoundVariable(const Token& name, bool fresh, VarKind kind, const Binding& binding) {
-    if (!fresh) return;
-    Variable var;
-    var.name = std::string(Text(name));
-    var.kind = kind;
-    var.decl = RangeOf(name);
-    var.bindings.push_back(binding);
-    AddVariable(std::move(var), &name);
+    if (fresh) AddSimpleVariable(kind, &name, &binding);
   }
 
   // <ATTRIB_statement> ::= "ATTRIB" <establishName> "=" <vtxAttribBinding>|<fragAttribBinding>
@@ -451,12 +586,12 @@ class Parser {
                               Text(b), vp() ? "fragment" : "vertex", vp() ? "vertex" : "fragment",
                               vp() ? "vertex.*" : "fragment.*"));
     }
-    if (b.kind == Tok::Ident && (Text(b) == "state" || Text(b) == "program")) {
+    if (b.kind == Tok::Ident && (Is(Text(b), "state") || Is(Text(b), "program"))) {
       return Fail(Diag::DeclWrongKind, RangeOf(b),
                   fmt::format("ATTRIB binds {} attributes; '{}' bindings are declared with PARAM",
                               vp() ? "vertex.*" : "fragment.*", Text(b)));
     }
-    if (b.kind == Tok::Ident && Text(b) == "result") {
+    if (b.kind == Tok::Ident && Is(Text(b), "result")) {
       return Fail(Diag::DeclWrongKind, RangeOf(b),
                   "ATTRIB binds attributes; result bindings are declared with OUTPUT");
     }
@@ -490,13 +625,7 @@ class Parser {
       Token name;
       bool fresh = false;
       if (!ParseEstablishName(&name, &fresh)) return false;
-      if (fresh) {
-        Variable var;
-        var.name = std::string(Text(name));
-        var.kind = kind;
-        var.decl = RangeOf(name);
-        AddVariable(std::move(var), &name);
-      }
+      if (fresh) AddSimpleVariable(kind, &name, nullptr);
     } while (Accept(Tok::Comma));
     return ExpectSemicolon("statement", Text(keyword));
   }
@@ -510,13 +639,13 @@ class Parser {
     if (!Expect(Tok::Equals, "'=' after the alias name")) return false;
     Token target;
     if (!ExpectIdent("the name of a declared variable", &target)) return false;
-    auto it = symbols_.find(Text(target));
-    if (it == symbols_.end()) {
+    const Symbol* aliased = symbols_.Find(Text(target));
+    if (aliased == nullptr) {
       if (fresh) Poison(name);
       return Fail(Diag::DeclAliasUndeclared, RangeOf(target),
                   fmt::format("ALIAS of undeclared identifier '{}'", Text(target)));
     }
-    if (fresh) symbols_[std::string(Text(name))] = {it->second.var, RangeOf(name)};
+    if (fresh) symbols_.Declare(RangeOf(name), aliased->var, /*replace=*/true);
     return ExpectSemicolon("ALIAS statement");
   }
 
@@ -629,11 +758,16 @@ class Parser {
             Diag::OperandNegatedConstant, RangeOf(sign),
             "an inline scalar constant takes no sign of its own; negate the operand instead");
       }
-      negative = Text(sign) == "-";
+      negative = Is(Text(sign), "-");
     }
     if (!PeekIs(Tok::Integer) && !PeekIs(Tok::Float)) return FailExpected("a number");
     Token number = Advance();
     float v = ParseFloatText(Text(number));
+    if (std::isinf(v) || (v == 0.0f && HasNonZeroDigit(Text(number)))) {
+      sink_->Report(Info(Diag::NumberRange), &source_, RangeOf(number),
+                    fmt::format("{} is beyond the range of a 32-bit float: it becomes {}",
+                                Text(number), std::isinf(v) ? "infinity" : "zero"));
+    }
     *range = {begin, number.end};
     *value = negative ? -v : v;
     return true;
@@ -699,7 +833,7 @@ class Parser {
     if (!PeekIs(Tok::Dot) || !PeekIs(Tok::Ident, 1)) return false;
     std::string_view w = Text(Peek(1));
     for (std::string_view candidate : words) {
-      if (w == candidate) {
+      if (Is(w, candidate)) {
         Advance();
         Advance();
         *got = w;
@@ -740,7 +874,7 @@ class Parser {
   // ---- bindings ------------------------------------------------------------------------
 
   bool IsAttribKeyword(const Token& t) const {
-    return t.kind == Tok::Ident && Text(t) == (vp() ? "vertex" : "fragment");
+    return t.kind == Tok::Ident && Is(Text(t), vp() ? "vertex" : "fragment");
   }
 
   [[nodiscard]] bool ParseAttribBinding(Binding* out) {
@@ -763,26 +897,26 @@ class Parser {
     b.selector = RangeOf(item);
     b.item = RangeOf(item);
     bool ok = true;
-    if (w == "position") {
+    if (Is(w, "position")) {
       b.vertex_attrib = VertexAttrib::Position;
-    } else if (w == "weight") {
+    } else if (Is(w, "weight")) {
       b.vertex_attrib = VertexAttrib::Weight;
       ok = ParseOptionalIndex(&b, "a weight number");
-    } else if (w == "normal") {
+    } else if (Is(w, "normal")) {
       b.vertex_attrib = VertexAttrib::Normal;
-    } else if (w == "color") {
+    } else if (Is(w, "color")) {
       std::string_view type;
       b.vertex_attrib = VertexAttrib::Color;
-      if (AcceptDotWord({"primary", "secondary"}, &type) && type == "secondary") {
+      if (AcceptDotWord({"primary", "secondary"}, &type) && Is(type, "secondary")) {
         b.vertex_attrib = VertexAttrib::SecondaryColor;
       }
       ok = RejectUnknownSuffix({"primary", "secondary"}, "colour type");
-    } else if (w == "fogcoord") {
+    } else if (Is(w, "fogcoord")) {
       b.vertex_attrib = VertexAttrib::FogCoord;
-    } else if (w == "texcoord") {
+    } else if (Is(w, "texcoord")) {
       b.vertex_attrib = VertexAttrib::TexCoord;
       ok = ParseOptionalIndex(&b, "a texture coordinate number");
-    } else if (w == "matrixindex") {
+    } else if (Is(w, "matrixindex")) {
       b.vertex_attrib = VertexAttrib::MatrixIndex;
       ok = ParseRequiredIndex(&b, "a matrix index number");
     } else {
@@ -807,17 +941,17 @@ class Parser {
     std::string_view w = Text(item);
     b.selector = RangeOf(item);
     bool ok = true;
-    if (w == "color") {
+    if (Is(w, "color")) {
       std::string_view type;
       b.fragment_attrib = FragmentAttrib::Color;
-      if (AcceptDotWord({"primary", "secondary"}, &type) && type == "secondary") {
+      if (AcceptDotWord({"primary", "secondary"}, &type) && Is(type, "secondary")) {
         b.fragment_attrib = FragmentAttrib::SecondaryColor;
       }
       ok = RejectUnknownSuffix({"primary", "secondary"}, "colour type");
-    } else if (w == "texcoord") {
+    } else if (Is(w, "texcoord")) {
       b.fragment_attrib = FragmentAttrib::TexCoord;
       ok = ParseOptionalIndex(&b, "a texture coordinate number");
-    } else if (w == "fogcoord") {
+    } else if (Is(w, "fogcoord")) {
       b.fragment_attrib = FragmentAttrib::FogCoord;
     } else {
       b.fragment_attrib = FragmentAttrib::Position;
@@ -844,7 +978,7 @@ class Parser {
   // The vertex-program <resultBinding> after "result" ".".
   [[nodiscard]] bool ParseVertexResult(Binding* b) {
     const Token& t = Peek();
-    if (t.kind == Tok::Ident && Text(t) == "depth") {
+    if (t.kind == Tok::Ident && Is(Text(t), "depth")) {
       return Fail(Diag::BindingStage, RangeOf(t),
                   "'result.depth' is a fragment-program result; vertex programs write "
                   "result.position, result.color, result.fogcoord, result.pointsize or "
@@ -857,19 +991,19 @@ class Parser {
     }
     std::string_view w = Text(item);
     b->selector = RangeOf(item);
-    if (w == "position") {
+    if (Is(w, "position")) {
       b->result = ResultReg::Position;
-    } else if (w == "color") {
+    } else if (Is(w, "color")) {
       // <resultColBinding> ::= "color" <optFaceType> <optColorType>
       b->result = ResultReg::Color;
       std::string_view word;
       if (AcceptDotWord({"front", "back"}, &word))
-        b->face = word == "back" ? Face::Back : Face::Front;
-      if (AcceptDotWord({"primary", "secondary"}, &word)) b->secondary = word == "secondary";
+        b->face = Is(word, "back") ? Face::Back : Face::Front;
+      if (AcceptDotWord({"primary", "secondary"}, &word)) b->secondary = Is(word, "secondary");
       return RejectUnknownSuffix({"front", "back", "primary", "secondary"}, "colour result");
-    } else if (w == "fogcoord") {
+    } else if (Is(w, "fogcoord")) {
       b->result = ResultReg::FogCoord;
-    } else if (w == "pointsize") {
+    } else if (Is(w, "pointsize")) {
       b->result = ResultReg::PointSize;
     } else {
       b->result = ResultReg::TexCoord;
@@ -880,8 +1014,8 @@ class Parser {
   // The fragment-program <resultBinding> after "result" ".".
   [[nodiscard]] bool ParseFragmentResult(Binding* b) {
     const Token& t = Peek();
-    if (t.kind == Tok::Ident && (Text(t) == "position" || Text(t) == "fogcoord" ||
-                                 Text(t) == "pointsize" || Text(t) == "texcoord")) {
+    if (t.kind == Tok::Ident && (Is(Text(t), "position") || Is(Text(t), "fogcoord") ||
+                                 Is(Text(t), "pointsize") || Is(Text(t), "texcoord"))) {
       return Fail(Diag::BindingStage, RangeOf(t),
                   fmt::format("'result.{}' is a vertex-program result; fragment programs write "
                               "result.color and result.depth",
@@ -890,7 +1024,7 @@ class Parser {
     Token item;
     if (!ExpectWord({"color", "depth"}, "fragment result", &item)) return false;
     b->selector = RangeOf(item);
-    if (Text(item) != "color") {
+    if (!Is(Text(item), "color")) {
       b->result = ResultReg::FragDepth;
       return true;
     }
@@ -898,7 +1032,7 @@ class Parser {
     if (!ParseOptionalIndex(b, "a draw buffer number")) return false;
     if (PeekIs(Tok::Dot) && PeekIs(Tok::Ident, 1)) {
       std::string_view next = Text(Peek(1));
-      if (next == "front" || next == "back" || next == "primary" || next == "secondary") {
+      if (Is(next, "front") || Is(next, "back") || Is(next, "primary") || Is(next, "secondary")) {
         return Fail(Diag::BindingStage, RangeOf(Peek(1)),
                     fmt::format("'result.color.{}' exists only in vertex programs; a fragment "
                                 "program writes result.color",
@@ -938,9 +1072,11 @@ class Parser {
       return Fail(Diag::BindingRowRange, RangeOf(last),
                   fmt::format("parameter range [{}..{}] ends before it starts", lo, hi));
     }
+    // At most a few thousand at once: a range far beyond every limit is still pushed one by one.
+    out->reserve(out->size() + std::min<size_t>(static_cast<size_t>(hi - lo) + 1, 4096));
     for (int i = lo; i <= hi; ++i) {
       Binding b;
-      b.kind = Text(which) == "env" ? BindingKind::ProgramEnv : BindingKind::ProgramLocal;
+      b.kind = Is(Text(which), "env") ? BindingKind::ProgramEnv : BindingKind::ProgramLocal;
       b.index = i;
       b.indexed = true;
       // A range is checked at its last number, a single parameter at its number.
@@ -965,11 +1101,11 @@ class Parser {
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
       std::string_view w = Text(t);
-      if (vp() && (w == "texenv" || w == "depth")) {
+      if (vp() && (Is(w, "texenv") || Is(w, "depth"))) {
         return Fail(Diag::BindingStage, RangeOf(t),
                     fmt::format("'state.{}' is available only in fragment programs", w));
       }
-      if (fp() && (w == "texgen" || w == "clip" || w == "point")) {
+      if (fp() && (Is(w, "texgen") || Is(w, "clip") || Is(w, "point"))) {
         return Fail(Diag::BindingStage, RangeOf(t),
                     fmt::format("'state.{}' is available only in vertex programs", w));
       }
@@ -980,7 +1116,7 @@ class Parser {
     Binding b;
     b.kind = BindingKind::State;
     b.selector = RangeOf(item);
-    if (w == "matrix") return ParseMatrixItem(start, b, out, multiple);
+    if (Is(w, "matrix")) return ParseMatrixItem(start, b, out, multiple);
     if (!ParseStateProperty(w, &b)) return false;
     b.range = {start.begin, last_end_};
     out->push_back(b);
@@ -991,22 +1127,22 @@ class Parser {
   [[nodiscard]] bool ParseStateProperty(std::string_view w, Binding* b) {
     std::string_view word;
     Token prop;
-    if (w == "material") {
+    if (Is(w, "material")) {
       // <stateMaterialItem> ::= "material" <optFaceType> "." <stateMatProperty>
       if (AcceptDotWord({"front", "back"}, &word))
-        b->face = word == "back" ? Face::Back : Face::Front;
+        b->face = Is(word, "back") ? Face::Back : Face::Front;
       if (!ExpectDot("material")) return false;
       if (!ExpectWord({"ambient", "diffuse", "specular", "emission", "shininess"},
                       "material property", &prop)) {
         return false;
       }
       std::string_view p = Text(prop);
-      b->state = p == "ambient"    ? StateItem::MaterialAmbient
-                 : p == "diffuse"  ? StateItem::MaterialDiffuse
-                 : p == "specular" ? StateItem::MaterialSpecular
-                 : p == "emission" ? StateItem::MaterialEmission
-                                   : StateItem::MaterialShininess;
-    } else if (w == "light") {
+      b->state = Is(p, "ambient")    ? StateItem::MaterialAmbient
+                 : Is(p, "diffuse")  ? StateItem::MaterialDiffuse
+                 : Is(p, "specular") ? StateItem::MaterialSpecular
+                 : Is(p, "emission") ? StateItem::MaterialEmission
+                                     : StateItem::MaterialShininess;
+    } else if (Is(w, "light")) {
       // <stateLightItem> ::= "light" "[" <stateLightNumber> "]" "." <stateLightProperty>
       if (!ParseRequiredIndex(b, "a light number") || !ExpectDot("]")) return false;
       if (!ExpectWord({"ambient", "diffuse", "specular", "position", "attenuation", "spot", "half"},
@@ -1014,21 +1150,21 @@ class Parser {
         return false;
       }
       std::string_view p = Text(prop);
-      if (p == "spot") {
+      if (Is(p, "spot")) {
         if (!ExpectDot("spot") || !ExpectWord({"direction"}, "spot property")) return false;
         b->state = StateItem::LightSpotDirection;
       } else {
-        b->state = p == "ambient"    ? StateItem::LightAmbient
-                   : p == "diffuse"  ? StateItem::LightDiffuse
-                   : p == "specular" ? StateItem::LightSpecular
-                   : p == "position" ? StateItem::LightPosition
-                   : p == "half"     ? StateItem::LightHalf
-                                     : StateItem::LightAttenuation;
+        b->state = Is(p, "ambient")    ? StateItem::LightAmbient
+                   : Is(p, "diffuse")  ? StateItem::LightDiffuse
+                   : Is(p, "specular") ? StateItem::LightSpecular
+                   : Is(p, "position") ? StateItem::LightPosition
+                   : Is(p, "half")     ? StateItem::LightHalf
+                                       : StateItem::LightAttenuation;
       }
-    } else if (w == "lightmodel") {
+    } else if (Is(w, "lightmodel")) {
       // <stateLModProperty> ::= "." "ambient" | <optFaceType> "." "scenecolor"
       if (AcceptDotWord({"front", "back"}, &word)) {
-        b->face = word == "back" ? Face::Back : Face::Front;
+        b->face = Is(word, "back") ? Face::Back : Face::Front;
         if (!ExpectDot(word) || !ExpectWord({"scenecolor"}, "light model property")) return false;
         b->state = StateItem::LightModelSceneColor;
       } else {
@@ -1036,53 +1172,53 @@ class Parser {
             !ExpectWord({"ambient", "scenecolor"}, "light model property", &prop)) {
           return false;
         }
-        b->state = Text(prop) == "ambient" ? StateItem::LightModelAmbient
-                                           : StateItem::LightModelSceneColor;
+        b->state = Is(Text(prop), "ambient") ? StateItem::LightModelAmbient
+                                             : StateItem::LightModelSceneColor;
       }
-    } else if (w == "lightprod") {
+    } else if (Is(w, "lightprod")) {
       // <stateLightProdItem> ::= "lightprod" "[" n "]" <optFaceType> "." <stateLProdProperty>
       if (!ParseRequiredIndex(b, "a light number")) return false;
       if (AcceptDotWord({"front", "back"}, &word))
-        b->face = word == "back" ? Face::Back : Face::Front;
+        b->face = Is(word, "back") ? Face::Back : Face::Front;
       if (!ExpectDot("]") ||
           !ExpectWord({"ambient", "diffuse", "specular"}, "light product property", &prop)) {
         return false;
       }
       std::string_view p = Text(prop);
-      b->state = p == "ambient"   ? StateItem::LightProdAmbient
-                 : p == "diffuse" ? StateItem::LightProdDiffuse
-                                  : StateItem::LightProdSpecular;
-    } else if (w == "texgen") {
+      b->state = Is(p, "ambient")   ? StateItem::LightProdAmbient
+                 : Is(p, "diffuse") ? StateItem::LightProdDiffuse
+                                    : StateItem::LightProdSpecular;
+    } else if (Is(w, "texgen")) {
       // <stateTexGenItem> ::= "texgen" <optTexCoordNum> "." <stateTexGenType> "." <coord>
       if (!ParseOptionalIndex(b, "a texture unit number") || !ExpectDot("texgen")) return false;
       Token type;
       if (!ExpectWord({"eye", "object"}, "texgen plane type", &type)) return false;
-      b->state = Text(type) == "eye" ? StateItem::TexGenEye : StateItem::TexGenObject;
+      b->state = Is(Text(type), "eye") ? StateItem::TexGenEye : StateItem::TexGenObject;
       Token coord;
       if (!ExpectDot(Text(type)) ||
           !ExpectWord({"s", "t", "r", "q"}, "texgen coordinate", &coord)) {
         return false;
       }
       std::string_view c = Text(coord);
-      b->coord = c == "s" ? 0 : c == "t" ? 1 : c == "r" ? 2 : 3;
-    } else if (w == "fog") {
+      b->coord = Is(c, "s") ? 0 : Is(c, "t") ? 1 : Is(c, "r") ? 2 : 3;
+    } else if (Is(w, "fog")) {
       if (!ExpectDot("fog") || !ExpectWord({"color", "params"}, "fog property", &prop)) {
         return false;
       }
-      b->state = Text(prop) == "color" ? StateItem::FogColor : StateItem::FogParams;
-    } else if (w == "clip") {
+      b->state = Is(Text(prop), "color") ? StateItem::FogColor : StateItem::FogParams;
+    } else if (Is(w, "clip")) {
       // <stateClipPlaneItem> ::= "clip" "[" n "]" "." "plane"
       if (!ParseRequiredIndex(b, "a clip plane number") || !ExpectDot("]") ||
           !ExpectWord({"plane"}, "clip plane property")) {
         return false;
       }
       b->state = StateItem::ClipPlane;
-    } else if (w == "point") {
+    } else if (Is(w, "point")) {
       if (!ExpectDot("point") || !ExpectWord({"size", "attenuation"}, "point property", &prop)) {
         return false;
       }
-      b->state = Text(prop) == "size" ? StateItem::PointSize : StateItem::PointAttenuation;
-    } else if (w == "texenv") {
+      b->state = Is(Text(prop), "size") ? StateItem::PointSize : StateItem::PointAttenuation;
+    } else if (Is(w, "texenv")) {
       // <stateTexEnvItem> ::= "texenv" <optLegacyTexUnitNum> "." "color"
       if (!ParseOptionalIndex(b, "a texture unit number") || !ExpectDot("texenv") ||
           !ExpectWord({"color"}, "texture environment property")) {
@@ -1111,17 +1247,17 @@ class Parser {
     b.selector = RangeOf(name);
     b.item = RangeOf(name);
     bool ok = true;
-    if (n == "modelview") {
+    if (Is(n, "modelview")) {
       b.matrix = MatrixName::Modelview;
       ok = ParseOptionalIndex(&b, "a modelview matrix number");
-    } else if (n == "projection") {
+    } else if (Is(n, "projection")) {
       b.matrix = MatrixName::Projection;
-    } else if (n == "mvp") {
+    } else if (Is(n, "mvp")) {
       b.matrix = MatrixName::Mvp;
-    } else if (n == "texture") {
+    } else if (Is(n, "texture")) {
       b.matrix = MatrixName::Texture;
       ok = ParseOptionalIndex(&b, "a texture unit number");
-    } else if (n == "palette") {
+    } else if (Is(n, "palette")) {
       b.matrix = MatrixName::Palette;
       ok = ParseRequiredIndex(&b, "a palette matrix number");
     } else {
@@ -1131,11 +1267,11 @@ class Parser {
     if (!ok) return false;
     std::string_view word;
     if (AcceptDotWord({"inverse", "transpose", "invtrans"}, &word)) {
-      b.modifier = word == "inverse"     ? MatrixModifier::Inverse
-                   : word == "transpose" ? MatrixModifier::Transpose
-                                         : MatrixModifier::InvTrans;
+      b.modifier = Is(word, "inverse")     ? MatrixModifier::Inverse
+                   : Is(word, "transpose") ? MatrixModifier::Transpose
+                                           : MatrixModifier::InvTrans;
     }
-    if (PeekIs(Tok::Dot) && PeekIs(Tok::Ident, 1) && Text(Peek(1)) != "row" &&
+    if (PeekIs(Tok::Dot) && PeekIs(Tok::Ident, 1) && !Is(Text(Peek(1)), "row") &&
         !LooksLikeSwizzle(Text(Peek(1)))) {
       const Token& bad = Peek(1);
       return Fail(Diag::BindingUnknown, RangeOf(bad),
@@ -1203,7 +1339,7 @@ class Parser {
     Instruction inst;
     inst.opcode_range = RangeOf(op_token);
     std::string_view base = word;
-    if (base.size() > 4 && base.substr(base.size() - 4) == "_SAT") {
+    if (base.size() > 4 && Is(base.substr(base.size() - 4), "_SAT")) {
       base.remove_suffix(4);
       inst.saturate = true;
     }
@@ -1291,7 +1427,7 @@ class Parser {
       names.push_back(k);
     }
     if (vp()) names.push_back("ADDRESS");
-    if (symbols_.count(word)) {
+    if (symbols_.Contains(word)) {
       return Fail(
           Diag::SyntaxUnknownOpcode, RangeOf(t),
           fmt::format("expected an instruction or a declaration, found the variable '{}'", word));
@@ -1475,7 +1611,7 @@ class Parser {
     Advance();
     Token mask;
     if (!ExpectIdent("the write mask 'x'", &mask)) return false;
-    if (Text(mask) != "x") {
+    if (!Is(Text(mask), "x")) {
       return Fail(
           Diag::OperandAddressComponent, RangeOf(mask),
           fmt::format("address register write mask '{}' is invalid; only '.x' exists", Text(mask)));
@@ -1486,17 +1622,11 @@ class Parser {
 
   bool IsBindingStart(const Token& t) const {
     std::string_view w = Text(t);
-    if (w == "state" || w == "program" || w == "result") return true;
-    return w == (vp() ? "vertex" : "fragment");
+    if (Is(w, "state") || Is(w, "program") || Is(w, "result")) return true;
+    return Is(w, vp() ? "vertex" : "fragment");
   }
 
-  int AddImplicit(VarKind kind, const Binding& b) {
-    Variable var;
-    var.kind = kind;
-    var.decl = b.range;
-    var.bindings.push_back(b);
-    return AddVariable(std::move(var), nullptr);
-  }
+  int AddImplicit(VarKind kind, const Binding& b) { return AddSimpleVariable(kind, nullptr, &b); }
 
   // An operand's own binding ("vertex.normal", "{1, 2}"): an unnamed variable of `kind`.
   [[nodiscard]] bool ParseImplicitSrc(VarKind kind, SrcOperand* out) {
@@ -1514,18 +1644,18 @@ class Parser {
     if (t.kind == Tok::Ident) {
       std::string_view w = Text(t);
       if (IsAttribKeyword(t)) return ParseImplicitSrc(VarKind::Attrib, out);
-      if (w == "state" || w == "program") return ParseImplicitSrc(VarKind::Param, out);
-      if (w == "result") {
+      if (Is(w, "state") || Is(w, "program")) return ParseImplicitSrc(VarKind::Param, out);
+      if (Is(w, "result")) {
         Token start = Peek();
         Binding ignored;
         if (!ParseResultBinding(&ignored)) return false;
         return Fail(Diag::OperandSrcWriteOnly, RangeOf(start),
                     "cannot read a result register: results are write-only");
       }
-      if ((w == "vertex" || w == "fragment") && !symbols_.count(w) && PeekIs(Tok::Dot, 1)) {
+      if ((Is(w, "vertex") || Is(w, "fragment")) && !symbols_.Contains(w) && PeekIs(Tok::Dot, 1)) {
         return Fail(Diag::BindingStage, RangeOf(t),
                     fmt::format("'{}.*' bindings exist only in {} programs", w,
-                                w == "vertex" ? "vertex" : "fragment"));
+                                Is(w, "vertex") ? "vertex" : "fragment"));
       }
       Token name = Advance();
       if (!ResolveName(name, &src.var)) return false;
@@ -1612,13 +1742,13 @@ class Parser {
     Advance();
     Token comp;
     if (!ExpectIdent("the address component 'x'", &comp)) return false;
-    if (Text(comp) != "x") {
+    if (!Is(Text(comp), "x")) {
       return Fail(Diag::OperandAddressComponent, RangeOf(comp),
                   fmt::format("address component '{}' is invalid; only '.x' exists", Text(comp)));
     }
     // <addrRegRelOffset> ::= "" | "+" <addrRegPosOffset> | "-" <addrRegNegOffset>
     if (PeekIs(Tok::Plus) || PeekIs(Tok::Minus)) {
-      bool negative = Text(Advance()) == "-";
+      bool negative = Is(Text(Advance()), "-");
       Token n;
       int offset = 0;
       if (!ExpectIntegerValue("an offset", &n, &offset)) return false;
@@ -1637,7 +1767,7 @@ class Parser {
   [[nodiscard]] bool ParseSwizzleSrcReg(bool scalar, std::string_view opname, SrcOperand* out) {
     uint32_t begin = Peek().begin;
     bool negate = false;
-    if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negate = Text(Advance()) == "-";
+    if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negate = Is(Text(Advance()), "-");
     SrcOperand& src = *out;
     if (!ParseSrcReg(/*allow_constant=*/true, &src)) return false;
     src.negate = negate;
@@ -1722,7 +1852,7 @@ class Parser {
       }
       Advance();  // ','
       bool negative = false;
-      if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negative = Text(Advance()) == "-";
+      if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negative = Is(Text(Advance()), "-");
       Swz value = Swz::Zero;
       if (!ParseExtSwizzleSelector(&sets, &value)) return false;
       Advance();
@@ -1739,8 +1869,8 @@ class Parser {
   [[nodiscard]] bool ParseExtSwizzleSelector(int* sets, Swz* value) {
     const Token& sel = Peek();
     std::string_view s = Text(sel);
-    if (sel.kind == Tok::Integer && (s == "0" || s == "1")) {
-      *value = s == "0" ? Swz::Zero : Swz::One;
+    if (sel.kind == Tok::Integer && (Is(s, "0") || Is(s, "1"))) {
+      *value = Is(s, "0") ? Swz::Zero : Swz::One;
       return true;
     }
     if (sel.kind != Tok::Ident || s.size() != 1) {
@@ -1829,18 +1959,28 @@ class Parser {
   size_t pos_ = 0;
   uint32_t last_end_ = 0;
   std::unique_ptr<Program> program_;
-  std::unordered_map<std::string, Symbol, StringHash, std::equal_to<>> symbols_;
+  SymbolTable symbols_;
 };
 
 }  // namespace
 
 bool IsReservedWord(std::string_view word, ProgramKind kind) {
-  const auto& keywords = kind == ProgramKind::Vertex ? kVpKeywords : kFpKeywords;
-  for (std::string_view k : keywords) {
-    if (k == word) return true;
+  // Keywords have 3 ("END") to 8 ("fragment") characters, opcodes 3 and 7 ("MOV_SAT"): most
+  // variable names are rejected here, without a comparison (one call per declared name).
+  if (word.size() < 3 || word.size() > 8) return false;
+  auto first = static_cast<unsigned char>(word[0]);
+  if (first >= 128) return false;
+  const KeywordLengths& lengths =
+      kind == ProgramKind::Vertex ? kVpKeywordLengths : kFpKeywordLengths;
+  if ((lengths.by_first[first] >> word.size()) & 1u) {
+    const auto& keywords = kind == ProgramKind::Vertex ? kVpKeywords : kFpKeywords;
+    for (std::string_view k : keywords) {
+      if (Is(word, k)) return true;
+    }
   }
+  if (word[0] < 'A' || word[0] > 'Z') return false;  // opcodes are upper case
   std::string_view base = word;
-  bool sat = base.size() > 4 && base.substr(base.size() - 4) == "_SAT";
+  bool sat = base.size() > 4 && Is(base.substr(base.size() - 4), "_SAT");
   if (sat) {
     if (kind == ProgramKind::Vertex) return false;
     base.remove_suffix(4);

@@ -1,7 +1,7 @@
 // Expansions of the opcode, option and diagnostic tables.
-#include <algorithm>
-#include <cassert>
-#include <utility>
+#include <cstdint>
+#include <iterator>
+#include <string_view>
 
 #include "arbiter/arbvp/check.h"
 #include "arbiter/arbvp/ir.h"
@@ -12,49 +12,54 @@ namespace arbiter::arbvp {
 using compiler::DiagnosticInfo;
 using compiler::Severity;
 
-const std::vector<OpcodeInfo>& AllOpcodes() {
-  static const std::vector<OpcodeInfo> table = {
+namespace {
+
+// The opcode table as a constant array: GetOpcodeInfo is called for every instruction by
+// several checks, and a function-local static costs a guard check per call.
+constexpr OpcodeInfo kOpcodeInfos[] = {
 #define ARBVP_OPCODE(name, stages, signature, klass, spec) \
   OpcodeInfo{Opcode::name, #name, OpStages::stages, OpSignature::signature, OpClass::klass, spec},
 #include "arbiter/arbvp/opcodes.def"
 #undef ARBVP_OPCODE
-  };
-  return table;
-}
+};
 
-const OpcodeInfo& GetOpcodeInfo(Opcode op) { return AllOpcodes()[static_cast<size_t>(op)]; }
-
-namespace {
-
-// Every ARB opcode name has three characters (checked when the table is built): a name is
-// looked up as one integer, which is cheaper than hashing it (one lookup per instruction).
+// Every ARB opcode name has three characters: a name is looked up as one integer, in a
+// switch (one lookup per instruction and per declared name).
 constexpr size_t kOpcodeNameSize = 3;
-uint32_t PackOpcodeName(std::string_view name) {
+constexpr uint32_t PackOpcodeName(std::string_view name) {
   uint32_t packed = 0;
   for (char c : name) packed = (packed << 8) | static_cast<unsigned char>(c);
   return packed;
 }
+constexpr bool OpcodeNamesHaveThreeCharacters() {
+  for (const OpcodeInfo& info : kOpcodeInfos) {
+    if (info.name.size() != kOpcodeNameSize) return false;
+  }
+  return true;
+}
+static_assert(OpcodeNamesHaveThreeCharacters());
 
 }  // namespace
 
+const std::vector<OpcodeInfo>& AllOpcodes() {
+  static const std::vector<OpcodeInfo> table(std::begin(kOpcodeInfos), std::end(kOpcodeInfos));
+  return table;
+}
+
+const OpcodeInfo& GetOpcodeInfo(Opcode op) { return kOpcodeInfos[static_cast<size_t>(op)]; }
+
 bool LookupOpcode(std::string_view name, Opcode* op) {
-  using Entry = std::pair<uint32_t, Opcode>;
-  static const std::vector<Entry> by_name = [] {
-    std::vector<Entry> entries;
-    for (const OpcodeInfo& info : AllOpcodes()) {
-      assert(info.name.size() == kOpcodeNameSize);
-      entries.emplace_back(PackOpcodeName(info.name), info.op);
-    }
-    std::sort(entries.begin(), entries.end());
-    return entries;
-  }();
   if (name.size() != kOpcodeNameSize) return false;
-  uint32_t key = PackOpcodeName(name);
-  auto it = std::lower_bound(by_name.begin(), by_name.end(), key,
-                             [](const Entry& e, uint32_t k) { return e.first < k; });
-  if (it == by_name.end() || it->first != key) return false;
-  *op = it->second;
-  return true;
+  switch (PackOpcodeName(name)) {
+#define ARBVP_OPCODE(name, stages, signature, klass, spec) \
+  case PackOpcodeName(#name):                              \
+    *op = Opcode::name;                                    \
+    return true;
+#include "arbiter/arbvp/opcodes.def"
+#undef ARBVP_OPCODE
+    default:
+      return false;
+  }
 }
 
 bool OpcodeInStage(Opcode op, ProgramKind kind) {

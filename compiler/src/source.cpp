@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -27,6 +28,20 @@ SourceFile::SourceFile(std::string path, std::string text)
   assert(text_.size() <= std::numeric_limits<uint32_t>::max());
   line_starts_.push_back(0);
   const size_t size = text_.size();
+  const char* const data = text_.data();
+  // Most inputs end lines with "\n" alone: then memchr finds each line end, many bytes at a
+  // time (every checked program builds this index, a few percent of checking).
+  if (std::memchr(data, '\r', size) == nullptr) {
+    line_starts_.reserve(size / 32 + 1);  // a guess: lines of program text are short
+    const char* end = data + size;
+    for (const char* p = data;
+         (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p))));) {
+      ++p;
+      if (p == end) break;  // a terminator at the very end opens no line
+      line_starts_.push_back(static_cast<uint32_t>(p - data));
+    }
+    return;
+  }
   for (size_t i = 0; i < size; ++i) {
     const char c = text_[i];
     if (c != '\n' && c != '\r') {

@@ -2,13 +2,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
+#include <cstdint>
 #include <set>
 #include <string>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "../binding_key.h"
+#include "../flat_table.h"
 #include "checks.h"
 
 namespace arbiter::arbvp {
@@ -93,12 +94,19 @@ class DistinctBindings {
   explicit DistinctBindings(bool signed_zero) : signed_zero_(signed_zero) {}
 
   // True when no binding before was the same.
-  bool Insert(const Binding& b) { return seen_.insert(KeyOf(b, signed_zero_)).second; }
+  bool Insert(const Binding& b) {
+    BindingKey key = KeyOf(b, signed_zero_);
+    bool inserted = false;
+    BindingKey* slot = seen_.FindOrInsert(
+        BindingKeyHash{}(key), [&](const BindingKey& k) { return k == key; }, &inserted);
+    if (inserted) *slot = key;
+    return inserted;
+  }
   size_t size() const { return seen_.size(); }
 
  private:
   bool signed_zero_;
-  std::unordered_set<BindingKey, BindingKeyHash> seen_;
+  FlatTable<BindingKey> seen_;
 };
 
 // Counts a resource and reports it once at the first count past the spec minimum
@@ -160,21 +168,55 @@ struct BuiltinLimits {
   int64_t spec_min = 0;
 };
 
-// The built-in profiles' values, by key: one hash lookup where LimitProfile::Get searches a
-// map of strings, for a limit the checks look up for every binding of every program.
-const BuiltinLimits& BuiltinLimitsOf(std::string_view key) {
-  static const std::unordered_map<std::string_view, BuiltinLimits> table = [] {
-    std::unordered_map<std::string_view, BuiltinLimits> values;
+// The built-in profiles' values, by key, where LimitProfile::Get searches a map of strings:
+// the checks look a limit up for every counter and every binding of every program. The keys
+// come from LimitKeys() (StageKey) or are the same literals, merged by the linker: a table
+// finds them by address, and the text is compared only when the address is not there.
+class BuiltinLimitsTable {
+ public:
+  BuiltinLimitsTable() {
     for (const compiler::LimitKey& k : compiler::LimitKeys()) {
-      values.emplace(k.key, BuiltinLimits{compiler::BuiltinProfile("mesa")->Get(k.key),
-                                          compiler::BuiltinProfile("spec-min")->Get(k.key)});
+      entries_.push_back({k.key, BuiltinLimits{compiler::BuiltinProfile("mesa")->Get(k.key),
+                                               compiler::BuiltinProfile("spec-min")->Get(k.key)}});
     }
-    return values;
-  }();
-  static const BuiltinLimits kUnknown;  // what LimitProfile::Get answers (after its assert)
-  auto it = table.find(key);
-  assert(it != table.end() && "unknown limit key");
-  return it != table.end() ? it->second : kUnknown;
+    assert(entries_.size() * 2 <= kSlots);
+    for (size_t e = 0; e < entries_.size(); ++e) {
+      size_t i = SlotOf(entries_[e].key.data());
+      while (by_address_[i] != 0) i = (i + 1) % kSlots;
+      by_address_[i] = static_cast<uint16_t>(e + 1);
+    }
+  }
+
+  const BuiltinLimits& Get(std::string_view key) const {
+    static const BuiltinLimits kUnknown;  // what LimitProfile::Get answers (after its assert)
+    for (size_t i = SlotOf(key.data()); by_address_[i] != 0; i = (i + 1) % kSlots) {
+      const Entry& e = entries_[by_address_[i] - 1u];
+      if (e.key.data() == key.data() && e.key.size() == key.size()) return e.limits;
+    }
+    for (const Entry& e : entries_) {
+      if (e.key == key) return e.limits;
+    }
+    assert(false && "unknown limit key");
+    return kUnknown;
+  }
+
+ private:
+  struct Entry {
+    std::string_view key;
+    BuiltinLimits limits;
+  };
+  static constexpr size_t kSlots = 256;
+  static size_t SlotOf(const char* p) {
+    return static_cast<size_t>((reinterpret_cast<uintptr_t>(p) * 0x9E3779B97F4A7C15ull) >> 56);
+  }
+
+  std::vector<Entry> entries_;
+  std::array<uint16_t, kSlots> by_address_{};  // entry index + 1; 0: empty
+};
+
+const BuiltinLimits& BuiltinLimitsOf(std::string_view key) {
+  static const BuiltinLimitsTable table;
+  return table.Get(key);
 }
 
 }  // namespace
