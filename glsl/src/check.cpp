@@ -8,6 +8,7 @@
 #include <mutex>
 #include <string>
 
+#include "charset.h"
 #include "diag.h"
 #include "info_log.h"
 #include "source_text.h"
@@ -49,7 +50,10 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
 
   // The text glslang parses keeps every line and column of the user's (source_text.h).
   std::vector<std::string> texts;
-  for (const compiler::SourceFile* file : sources) texts.push_back(PrepareForGlslang(file->text()));
+  for (const compiler::SourceFile* file : sources) {
+    const std::string blanked = ReportInvalidCharacters(*file, sink);
+    texts.push_back(PrepareForGlslang(blanked.empty() ? file->text() : blanked));
+  }
   std::vector<const char*> strings;
   std::vector<int> lengths;
   for (const std::string& text : texts) {

@@ -20,6 +20,9 @@ namespace {
 
 using compiler::SourceFile;
 
+// glslang's bison parser: YYMAXDEPTH, the default.
+constexpr int kParserStackDepth = 10000;
+
 // Which code a glslang message gets: the first rule whose text occurs in the message.
 struct MessageRule {
   std::string_view needle;
@@ -27,6 +30,8 @@ struct MessageRule {
 };
 
 constexpr MessageRule kCompileRules[] = {
+    // bison's "memory exhausted": its stack of YYMAXDEPTH (10000) entries overflowed.
+    {"memory exhausted", Diag::NestingTooDeep},
     {"syntax error", Diag::SyntaxError},
     {"cannot be bool", Diag::VaryingType},
     {"must be qualified as flat", Diag::VaryingType},
@@ -120,6 +125,31 @@ compiler::Range FindFloatSuffix(const SourceFile& file, uint32_t line) {
     }
   }
   return {start, start};
+}
+
+// Where ( [ { first nest deepest in `file`, comments skipped: the place a parser stack
+// overflow is about (glslang names the line only, and bison's depth is not the bracket depth).
+compiler::Range DeepestNesting(const SourceFile& file) {
+  std::string_view text = file.text();
+  size_t depth = 0;
+  size_t deepest = 0;
+  size_t where = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text.compare(i, 2, "//") == 0) {
+      i = std::min(text.find('\n', i), text.size());
+    } else if (text.compare(i, 2, "/*") == 0) {
+      size_t end = text.find("*/", i + 2);
+      i = end == std::string_view::npos ? text.size() : end + 1;
+    } else if (text[i] == '(' || text[i] == '[' || text[i] == '{') {
+      if (++depth > deepest) {
+        deepest = depth;
+        where = i;
+      }
+    } else if ((text[i] == ')' || text[i] == ']' || text[i] == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return {static_cast<uint32_t>(where), static_cast<uint32_t>(deepest > 0 ? where + 1 : where)};
 }
 
 // The first whole-word occurrence of `token` in any source (for link messages).
@@ -267,14 +297,21 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
       std::islower(static_cast<unsigned char>(message[1]))) {
     message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
   }
-  if (relaxed != nullptr) {
+  if (diag == Diag::NestingTooDeep) {
+    message = fmt::format(
+        "nested too deeply: the parser's stack ({} entries) overflowed; GLSL 1.10 sets no "
+        "limit, but no front end parses this: split the expression or statement",
+        kParserStackDepth);
+  } else if (relaxed != nullptr) {
     message += "; GLSL 1.10 leaves such an access undefined (sections 5.5 and 5.6), it is no error";
   } else if (!token.empty()) {
     message += fmt::format(" ('{}')", token);
   }
 
   compiler::Range range{0, 0};
-  if (line > 0 && token == "floating-point suffix") {
+  if (diag == Diag::NestingTooDeep) {
+    range = DeepestNesting(*file);
+  } else if (line > 0 && token == "floating-point suffix") {
     range = FindFloatSuffix(*file, line);
   } else if (line > 0) {
     range = FindOnLine(*file, line, token);

@@ -204,9 +204,13 @@ void NestFunctionBodies(std::string* text) {
 
 std::string PrepareForGlslang(std::string_view text) {
   std::string out(text);
-  // 3.1 counts vertical tab and form feed as white space; glslang 12 rejects them.
-  for (char& c : out) {
+  // 3.1 counts vertical tab and form feed as white space; glslang 12 rejects them. 3.1 ends
+  // a line at a carriage return too; glslang 12 counts line feeds only, so a lone CR (old
+  // Mac line ends) becomes a line feed: same length, and glslang's line numbers are 3.1's.
+  for (size_t i = 0; i < out.size(); ++i) {
+    char& c = out[i];
     if (c == '\v' || c == '\f') c = ' ';
+    if (c == '\r' && (i + 1 == out.size() || out[i + 1] != '\n')) c = '\n';
   }
   ReplaceWords(&out, /*to_glslang=*/true);
   NestFunctionBodies(&out);

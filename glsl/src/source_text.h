@@ -8,8 +8,9 @@
 namespace arbiter::glsl {
 
 // The source as glslang must see it: vertical tab and form feed blanked (1.10 3.1 counts
-// them as white space), words that 1.10 does not reserve but glslang 12 does renamed (3.6),
-// and function bodies that redeclare a parameter nested one scope deeper (4.2).
+// them as white space), a lone carriage return made a line feed (3.1 ends lines at either),
+// words that 1.10 does not reserve but glslang 12 does renamed (3.6), and function bodies
+// that redeclare a parameter nested one scope deeper (4.2).
 std::string PrepareForGlslang(std::string_view text);
 
 // The user's spelling of glslang's text (a message, a symbol name): undoes the renaming.

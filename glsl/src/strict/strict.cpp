@@ -67,6 +67,7 @@ void RunStrictChecks(const StrictContext& ctx) {
   CheckConditionals(ctx);
   CheckQualifiers(ctx);
   CheckConstInitializers(ctx);
+  CheckFloatLiterals(ctx);
   CheckArraySizes(ctx);
   CheckExpressions(ctx);
   CheckBuiltinVariables(ctx);

@@ -47,6 +47,8 @@ void CheckConditionals(const StrictContext& ctx);  // strict_conditionals.cpp
 void CheckQualifiers(const StrictContext& ctx);  // strict_qualifiers.cpp
 // Chapter 4.3.2: no function calls in const initializers.
 void CheckConstInitializers(const StrictContext& ctx);  // strict_const.cpp
+// Chapter 4.1.4: float literals beyond a 32-bit float (warnings).
+void CheckFloatLiterals(const StrictContext& ctx);  // strict_numbers.cpp
 // Chapters 4.1.9 and 4.3.3: array sizes are integral constant expressions, operand by operand.
 void CheckArraySizes(const StrictContext& ctx);  // strict_arrays.cpp
 
