@@ -4,7 +4,7 @@ expected and observed values, unmet [require] lines skip, malformed files fail a
 clear message and exit 1, a hanging shader fails alone at its time limit, --junit and --png
 write what they promise, and the output does not depend on -j.
 
-  runner_test.py ARBITER
+  runner_test.py ARBITER [--sanitized]
 """
 import json
 import os
@@ -16,6 +16,9 @@ import xml.etree.ElementTree as ET
 import zlib
 
 ARBITER = os.path.abspath(sys.argv[1])
+# The binary runs under ASan/UBSan: workers have no memory limit (the sanitizers reserve
+# terabytes of address space), so only the time limit guards them.
+SANITIZED = "--sanitized" in sys.argv[2:]
 FAILURES = []
 
 RED_FP = """[require]
@@ -53,6 +56,14 @@ CASES = {
                              "  float x = 0.0;\n  while (u > 0.0) { x += 1.0; }\n"
                              "  gl_FragColor = vec4(x);\n}\n\n[test]\nuniform float u 1.0\n"
                              "draw rect -1 -1 2 2\n",
+    # Mesa's compiler allocates for every element of a huge local array without checking
+    # its allocations: past the worker's memory limit it crashes.
+    "glsl-big-array.shader_test": "[require]\nGLSL >= 1.10\n\n[vertex shader passthrough]\n\n"
+                                  "[fragment shader]\nuniform int n;\nvoid main() {\n"
+                                  "  float big[200000000];\n"
+                                  "  for (int i = 0; i < n; i++) big[i] = float(i);\n"
+                                  "  gl_FragColor = vec4(big[n - 1]);\n}\n\n[test]\n"
+                                  "uniform int n 4\ndraw rect -1 -1 2 2\n",
     "link-error.shader_test": "[require]\nGLSL >= 1.10\n\n[vertex shader]\nvoid f();\n"
                               "void main() { f(); gl_Position = gl_Vertex; }\n\n"
                               "[test]\nlink error\n",
@@ -175,6 +186,14 @@ def main():
                             "pass.shader_test"], tmp)
         check("hang", code == 1 and "FAIL glsl-hang.shader_test" in out and
               "time limit of 2000 ms" in out and "PASS pass.shader_test" in out, out)
+
+        # A shader that makes the driver allocate without bound: the memory limit stops it
+        # (under the sanitizers, which need the address space, the time limit does).
+        code, out, _ = run(["-j", "1", "--timeout", "20000", "--memory-limit", "1024",
+                            "glsl-big-array.shader_test", "pass.shader_test"], tmp)
+        stopped = ("time limit of 20000 ms" if SANITIZED else "its memory limit is 1024 MiB")
+        check("big array", code == 1 and "FAIL glsl-big-array.shader_test" in out and
+              stopped in out and "PASS pass.shader_test" in out, out)
 
         # --junit: one testcase per test, failures and skips counted.
         junit = os.path.join(tmp, "results.xml")

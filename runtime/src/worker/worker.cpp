@@ -79,9 +79,18 @@ void WriteAll(int fd, const char* data, size_t size) {
   _exit(0);
 }
 
-std::string Describe(int wait_status) {
+std::string Describe(int wait_status, const WorkerLimits& limits) {
   if (WIFSIGNALED(wait_status)) {
     int sig = WTERMSIG(wait_status);
+#ifndef ARBITER_SANITIZED
+    // Drivers do not check every allocation: at the memory limit they crash instead.
+    if (sig == SIGSEGV || sig == SIGBUS || sig == SIGABRT) {
+      return fmt::format("the worker was killed by signal {} ({}); its memory limit is {} MiB", sig,
+                         strsignal(sig), limits.memory_bytes >> 20);
+    }
+#else
+    (void)limits;
+#endif
     return fmt::format("the worker was killed by signal {} ({})", sig, strsignal(sig));
   }
   return fmt::format("the worker exited with code {} without an answer", WEXITSTATUS(wait_status));
@@ -165,7 +174,7 @@ WorkerStatus Finish(const WorkerLimits& limits, Child* child, std::string* paylo
   }
   const std::string& answer = child->answer;
   if (answer.empty() || !WIFEXITED(wait_status) || WEXITSTATUS(wait_status) != 0) {
-    *error = Describe(wait_status);
+    *error = Describe(wait_status, limits);
     return WorkerStatus::Crashed;
   }
   switch (answer[0]) {

@@ -1,0 +1,30 @@
+// Fuzz target: the GLSL translator, with the property "every program the checker accepts
+// translates to GLSL that glslang accepts" as the oracle (as `arbiter translate` checks it).
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/runtime/translate.h"
+#include "fuzz_input.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace arbiter;
+  fuzz::AcceptedProgram accepted;
+  if (!fuzz::AcceptArbProgram(data, size, &accepted)) return -1;
+  const arbvp::Program* program = accepted.checked.program.get();
+  const bool vertex = accepted.vertex;
+  const compiler::SourceFile* source = accepted.source.get();
+  runtime::CheckedTranslation t = runtime::TranslateChecked(
+      vertex ? program : nullptr, vertex ? nullptr : program, arbvp::EmitOptions{},
+      vertex ? source : nullptr, vertex ? nullptr : source);
+  if (!t.ok) {
+    std::fprintf(stderr,
+                 "fuzz_translate: an accepted program's translation is not valid GLSL 1.10: %s\n"
+                 "---- program ----\n%s\n---- translation ----\n%s\n",
+                 t.error.c_str(), source->text().c_str(),
+                 vertex ? t.vertex.c_str() : t.fragment.c_str());
+    __builtin_trap();
+  }
+  return 0;
+}
