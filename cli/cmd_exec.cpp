@@ -176,7 +176,8 @@ void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
     }
     j["differences"] = list;
   }
-  fmt::print("{}\n", j.dump(2));
+  // A path that is not UTF-8 becomes U+FFFD instead of throwing.
+  fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
 int RunExec(const ExecCommandOptions& options) {

@@ -259,7 +259,10 @@ int RunInfo(const CommonOptions& options) {
   if (options.format == "json") {
     nlohmann::ordered_json doc;
     doc["programs"] = out.programs;
-    std::fputs((doc.dump(2) + "\n").c_str(), stdout);
+    // A path that is not UTF-8 becomes U+FFFD instead of throwing.
+    const std::string text =
+        doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+    std::fputs((text + "\n").c_str(), stdout);
   } else {
     std::fputs(out.text.c_str(), stdout);
   }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <thread>
 
 #include "arbiter/compiler/source.h"
@@ -119,6 +120,16 @@ int RunTests(const RunCommandOptions& options) {
   std::vector<std::string> paths;
   Exit exit = ExpandTests(options.files, &paths, &run.png_names) ? Exit::Ok : Exit::Rejected;
   if (!options.png.empty()) {
+    // Two tests of one PNG name would overwrite each other's picture, the last to finish
+    // winning (-j): refuse, as translate refuses two inputs with one output.
+    std::set<std::string> seen;
+    for (const std::string& name : run.png_names) {
+      if (!seen.insert(name).second) {
+        fmt::print(stderr, "arbiter: error: two tests would both write '{}' in '{}'\n", name,
+                   options.png);
+        return static_cast<int>(Exit::Usage);
+      }
+    }
     std::error_code ec;
     fs::create_directories(options.png, ec);
     if (ec) {
@@ -153,7 +164,8 @@ int RunTests(const RunCommandOptions& options) {
     j["passed"] = passed;
     j["failed"] = failed;
     j["skipped"] = skipped;
-    fmt::print("{}\n", j.dump(2));
+    // A path that is not UTF-8 becomes U+FFFD instead of throwing.
+    fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
   } else {
     for (const runtime::ShaderTestResult& r : results) PrintResult(r);
     fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,

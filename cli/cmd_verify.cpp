@@ -227,7 +227,8 @@ int RunVerify(const VerifyCommandOptions& options) {
       list.push_back(VerdictJson(v, static_cast<size_t>(options.max_reports)));
     }
     j["programs"] = list;
-    fmt::print("{}\n", j.dump(2));
+    // A path that is not UTF-8 becomes U+FFFD instead of throwing.
+    fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
   } else {
     PrintText(verdicts, options, setup);
   }

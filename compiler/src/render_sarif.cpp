@@ -59,16 +59,46 @@ Json PhysicalLocation(std::string_view path, const SourceFile* file, Range range
   return Json{{"physicalLocation", std::move(physical)}};
 }
 
+// Text as Markdown shows it: grammar symbols such as '<instruction>' would otherwise be taken
+// for HTML tags (and dropped), '_SAT' or '[n]' for emphasis or links.
+std::string MarkdownEscape(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (std::string_view("\\`*_[]<>#").find(c) != std::string_view::npos) {
+      out += '\\';
+    }
+    out += c;
+  }
+  return out;
+}
+
+// The rule's help, as docs/diagnostics.md words the entry (severity, summary, spec clause)
+// plus a link to it: code-scanning services show it beside each result.
+Json Help(const DiagnosticInfo& info, std::string_view help_uri) {
+  const std::string_view severity = SeverityName(info.severity);
+  std::string text = fmt::format("{}: {}.", severity, info.summary);
+  std::string markdown = fmt::format("**{}**: {}.", severity, MarkdownEscape(info.summary));
+  if (!info.spec_ref.empty()) {
+    text += fmt::format(" Spec: {}.", info.spec_ref);
+    markdown += fmt::format(" Spec: {}.", MarkdownEscape(info.spec_ref));
+  }
+  text += fmt::format(" Documentation: {}", help_uri);
+  markdown += fmt::format("\n\n[`{}` in arbiter's diagnostics]({})", info.code, help_uri);
+  return Json{{"text", std::move(text)}, {"markdown", std::move(markdown)}};
+}
+
 Json Rule(const DiagnosticInfo& info) {
   std::string full(info.summary);
   if (!info.spec_ref.empty()) {
     full += fmt::format(" ({})", info.spec_ref);
   }
+  const std::string help_uri = fmt::format("{}{}", kHelpUriBase, info.code);
   Json rule = Json::object();
   rule["id"] = info.code;
   rule["shortDescription"] = {{"text", info.summary}};
   rule["fullDescription"] = {{"text", full}};
-  rule["helpUri"] = fmt::format("{}{}", kHelpUriBase, info.code);
+  rule["help"] = Help(info, help_uri);
+  rule["helpUri"] = help_uri;
   rule["defaultConfiguration"] = {{"level", Level(info.severity)}};
   return rule;
 }

@@ -481,6 +481,9 @@ void ExpectValidSarif(const json& log) {
     EXPECT_TRUE(ids.insert(rule["id"].get<std::string>()).second) << "duplicate rule " << rule;
     EXPECT_TRUE(rule["shortDescription"]["text"].is_string());
     EXPECT_TRUE(rule["fullDescription"]["text"].is_string());
+    // Code-scanning services show `help` with each result (SARIF 2.1.0 3.49.13).
+    EXPECT_TRUE(rule["help"]["text"].is_string()) << rule;
+    EXPECT_TRUE(rule["help"]["markdown"].is_string()) << rule;
     EXPECT_EQ(rule["helpUri"],
               "https://github.com/arbiter-shaders/arbiter/blob/main/docs/diagnostics.md#" +
                   rule["id"].get<std::string>());
@@ -535,6 +538,19 @@ TEST_F(GoldenTest, SarifStructure) {
                                       "arb-syntax-no-final-newline", "io-read"}));
   const json& rule = log["runs"][0]["tool"]["driver"]["rules"][0];
   EXPECT_EQ(rule["fullDescription"]["text"], "a name is declared twice (ARBfp 3.11.3.1)");
+  const std::string doc =
+      "https://github.com/arbiter-shaders/arbiter/blob/main/docs/diagnostics.md#";
+  EXPECT_EQ(rule["help"]["text"],
+            "error: a name is declared twice. Spec: ARBfp 3.11.3.1. Documentation: " + doc +
+                "arb-decl-redeclared");
+  EXPECT_EQ(rule["help"]["markdown"],
+            "**error**: a name is declared twice. Spec: ARBfp 3.11.3.1.\n\n"
+            "[`arb-decl-redeclared` in arbiter's diagnostics](" +
+                doc + "arb-decl-redeclared)");
+  // A code without a spec clause: no "Spec:" sentence.
+  const json& io_rule = log["runs"][0]["tool"]["driver"]["rules"][6];
+  EXPECT_EQ(io_rule["help"]["text"],
+            "error: an input cannot be read. Documentation: " + doc + "io-read");
   EXPECT_EQ(log["runs"][0]["results"].size(), 10u);
   const json& result = log["runs"][0]["results"][9];
   EXPECT_EQ(result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
@@ -546,6 +562,25 @@ TEST(RenderSarifTest, EmptyLogIsValid) {
   ExpectValidSarif(log);
   EXPECT_TRUE(log["runs"][0]["results"].empty());
   EXPECT_TRUE(log["runs"][0]["tool"]["driver"]["rules"].empty());
+}
+
+TEST(RenderSarifTest, HelpMarkdownEscapesGrammarSymbols) {
+  constexpr DiagnosticInfo kSaturate{"arb-syntax-saturate-vp", Severity::Error,
+                                     "_SAT is a fragment-program suffix",
+                                     "ARBvp 2.14.2 <instruction>"};
+  FileReport report;
+  report.path = "a.vp";
+  report.diagnostics.push_back(MakeDiag(kSaturate, nullptr, {}, "'MOV_SAT' in a vertex program"));
+  const json log = json::parse(RenderSarif({report}, "0.1.0"));
+  const json& help = log["runs"][0]["tool"]["driver"]["rules"][0]["help"];
+  // Markdown would take '<instruction>' for an HTML tag and '_' for emphasis; text keeps them.
+  const std::string markdown = help["markdown"];
+  EXPECT_EQ(
+      markdown.substr(0, markdown.find("\n\n")),
+      "**error**: \\_SAT is a fragment-program suffix. Spec: ARBvp 2.14.2 \\<instruction\\>.");
+  const std::string text = help["text"];
+  EXPECT_EQ(text.substr(0, text.find(" Documentation: ")),
+            "error: _SAT is a fragment-program suffix. Spec: ARBvp 2.14.2 <instruction>.");
 }
 
 TEST(RenderJsonTest, EmptyDocument) {

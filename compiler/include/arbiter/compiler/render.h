@@ -37,7 +37,8 @@ std::string RenderText(const FileReport& report, const TextOptions& options);
 std::string RenderJson(const std::vector<FileReport>& reports);
 
 // SARIF 2.1.0 with one run, the tool "arbiter", rules for every code used (id = code,
-// shortDescription = summary), results with physical locations (1-based line/column,
+// shortDescription = summary, help = summary and spec clause as text and markdown, helpUri =
+// its docs/diagnostics.md entry), results with physical locations (1-based line/column,
 // byteOffset) and related locations for notes. columnKind is "unicodeCodePoints"; dropped
 // errors are reported as a tool execution notification.
 std::string RenderSarif(const std::vector<FileReport>& reports, const std::string& tool_version);
