@@ -155,19 +155,42 @@ bool ReadFileBytes(const std::string& path, std::string* bytes, std::string* err
   if (path == "-") {
     return ReadStream(stdin, bytes, error) && CheckSize(*bytes, error);
   }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    *error = ErrnoReason(EISDIR);
+  // open, fstat, one read, close: a batch reads thousands of small files, and the system
+  // calls were half of checking one (docs/performance.md).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    *error = ErrnoReason(errno);
     return false;
   }
-  errno = 0;
-  std::FILE* stream = std::fopen(path.c_str(), "rb");
-  if (stream == nullptr) {
-    *error = ErrnoReason(errno != 0 ? errno : ENOENT);
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || S_ISDIR(info.st_mode)) {
+    *error = ErrnoReason(S_ISDIR(info.st_mode) ? EISDIR : errno);
+    ::close(fd);
     return false;
   }
-  const bool ok = ReadStream(stream, bytes, error);
-  std::fclose(stream);
+  // A regular file's size is known: ask for one byte more, and a short read is its end.
+  // Pipes, devices and a file that grows go on until read says end of file.
+  size_t chunk = S_ISREG(info.st_mode) ? static_cast<size_t>(info.st_size) + 1 : 1 << 16;
+  bool ok = true;
+  for (;;) {
+    const size_t used = bytes->size();
+    bytes->resize(used + chunk);
+    const ssize_t count = ::read(fd, bytes->data() + used, chunk);
+    if (count < 0 && errno == EINTR) {
+      bytes->resize(used);
+      continue;
+    }
+    if (count < 0) {
+      *error = ErrnoReason(errno);
+      ok = false;
+      bytes->resize(used);
+      break;
+    }
+    bytes->resize(used + static_cast<size_t>(count));
+    if (count == 0 || (S_ISREG(info.st_mode) && static_cast<size_t>(count) < chunk)) break;
+    chunk = 1 << 16;
+  }
+  ::close(fd);
   return ok && CheckSize(*bytes, error);
 }
 
