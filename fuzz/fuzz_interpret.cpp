@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "accept_arb.h"
 #include "arbiter/arbvp/generate.h"
 #include "arbiter/arbvp/interpret.h"
-#include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace arbiter;

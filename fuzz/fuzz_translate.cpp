@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "accept_arb.h"
 #include "arbiter/arbvp/emit.h"
 #include "arbiter/runtime/translate.h"
-#include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace arbiter;
