@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -42,6 +43,27 @@ TEST(FrontEnd, NumbersRoundAsStrtof) {
       "0.000000000000000000000000000000000000000000001401298464324817"};
   for (const char* n : numbers) {
     float expected = std::strtof(n, nullptr);
+    EXPECT_EQ(std::bit_cast<uint32_t>(ParsedValue(n)), std::bit_cast<uint32_t>(expected)) << n;
+  }
+}
+
+// The parser reads short plain decimals (an integer part and at most ten decimals, below
+// 2^24 as digits) by one float division; that shortcut and its edges must round as strtof.
+TEST(FrontEnd, ShortDecimalsRoundAsStrtof) {
+  std::vector<std::string> numbers = {
+      "16777215",      "16777216",     "16777217",    "1677721.5", "0.1234567891",
+      "0.12345678912", "0.0000000001", "9999999999.", "123.4567",  "0.3",
+      "0.7",           "2.675",        "1.0000001"};
+  // A fixed pseudo-random sweep of the shortcut's shape: up to 8 digits, the point anywhere.
+  uint32_t state = 12345;
+  for (int i = 0; i < 400; ++i) {
+    state = state * 1664525u + 1013904223u;
+    std::string digits = std::to_string(state % 100000000u);
+    const size_t point = (state >> 8) % (digits.size() + 1);
+    numbers.push_back(digits.substr(0, point) + "." + digits.substr(point));
+  }
+  for (const std::string& n : numbers) {
+    float expected = std::strtof(n.c_str(), nullptr);
     EXPECT_EQ(std::bit_cast<uint32_t>(ParsedValue(n)), std::bit_cast<uint32_t>(expected)) << n;
   }
 }
