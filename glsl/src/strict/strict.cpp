@@ -48,6 +48,16 @@ std::string BlankComments(std::string_view text) {
   return out;
 }
 
+const std::string& BlankedText(const StrictContext& ctx, size_t index) {
+  if (ctx.blanked.empty()) {
+    ctx.blanked.reserve(ctx.sources.size());
+    for (const compiler::SourceFile* file : ctx.sources) {
+      ctx.blanked.push_back(BlankComments(file->text()));
+    }
+  }
+  return ctx.blanked[index];
+}
+
 bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
                 const compiler::SourceFile** file, compiler::Range* range) {
   if (loc.string < 0 || static_cast<size_t>(loc.string) >= ctx.sources.size() || loc.line < 1) {

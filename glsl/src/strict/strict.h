@@ -36,6 +36,9 @@ struct StrictContext {
   // Whether the shader assigns gl_FragColor and gl_FragData (7.2): found in the whole AST by
   // CheckBuiltinVariables, judged after the link step by CheckFragmentOutputs.
   FragmentOutputWrites* fragment_writes;
+  // Each source with its comments blanked, made once for the chapters that scan the text
+  // (BlankedText); empty until the first asks.
+  mutable std::vector<std::string> blanked = {};
 };
 
 // Chapter 3.3, the preprocessor: #version below 110, #extension placement, #pragma
@@ -71,6 +74,8 @@ bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::strin
 
 // The text with comments replaced by blanks (newlines kept), so offsets stay valid.
 std::string BlankComments(std::string_view text);
+// BlankComments of ctx.sources[index], computed once per shader.
+const std::string& BlankedText(const StrictContext& ctx, size_t index);
 
 // The range of a glslang source location (line and column in string `loc.string`), `length`
 // bytes long; false when the location is not in the sources.

@@ -103,15 +103,14 @@ struct Macro {
 // one shader, read in order (a macro or a group goes on into the next string).
 class Preprocessed {
  public:
-  explicit Preprocessed(const std::vector<const compiler::SourceFile*>& files) {
-    for (const compiler::SourceFile* file : files) Read(*file);
+  explicit Preprocessed(const StrictContext& ctx) {
+    for (size_t i = 0; i < ctx.sources.size(); ++i) Read(*ctx.sources[i], BlankedText(ctx, i));
   }
 
   const std::vector<Tok>& tokens() const { return tokens_; }
 
  private:
-  void Read(const compiler::SourceFile& file) {
-    std::string text = BlankComments(file.text());
+  void Read(const compiler::SourceFile& file, const std::string& text) {
     for (uint32_t n = 1; n <= file.line_count(); ++n) {
       uint32_t start = file.LineStart(n);
       std::string_view line = std::string_view(text).substr(start, file.LineText(n).size());
@@ -326,8 +325,7 @@ struct Symbol {
 
 class ArraySizes {
  public:
-  explicit ArraySizes(const StrictContext& ctx)
-      : ctx_(ctx), pre_(ctx.sources), toks_(pre_.tokens()) {}
+  explicit ArraySizes(const StrictContext& ctx) : ctx_(ctx), pre_(ctx), toks_(pre_.tokens()) {}
 
   void Run() {
     scopes_.emplace_back();

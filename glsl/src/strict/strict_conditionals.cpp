@@ -205,8 +205,9 @@ struct Group {
 }  // namespace
 
 void CheckConditionals(const StrictContext& ctx) {
-  for (const compiler::SourceFile* file : ctx.sources) {
-    std::string blanked = BlankComments(file->text());
+  for (size_t index = 0; index < ctx.sources.size(); ++index) {
+    const compiler::SourceFile* file = ctx.sources[index];
+    const std::string& blanked = BlankedText(ctx, index);
     std::map<std::string, Macro, std::less<>> macros;
     std::vector<Group> groups;
     auto active = [&] { return groups.empty() || groups.back().active; };

@@ -51,8 +51,9 @@ bool HasNonZeroMantissaDigit(std::string_view number) {
 }  // namespace
 
 void CheckFloatLiterals(const StrictContext& ctx) {
-  for (const compiler::SourceFile* file : ctx.sources) {
-    const std::string text = BlankComments(file->text());
+  for (size_t index = 0; index < ctx.sources.size(); ++index) {
+    const compiler::SourceFile* file = ctx.sources[index];
+    const std::string& text = BlankedText(ctx, index);
     for (size_t i = 0; i < text.size();) {
       const bool starts =
           IsDigit(text[i]) || (text[i] == '.' && i + 1 < text.size() && IsDigit(text[i + 1]));

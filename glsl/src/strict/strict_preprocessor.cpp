@@ -46,8 +46,9 @@ std::vector<Word> Words(std::string_view line) {
 }  // namespace
 
 void CheckPreprocessor(const StrictContext& ctx) {
-  for (const compiler::SourceFile* file : ctx.sources) {
-    std::string text = BlankComments(file->text());
+  for (size_t index = 0; index < ctx.sources.size(); ++index) {
+    const compiler::SourceFile* file = ctx.sources[index];
+    const std::string& text = BlankedText(ctx, index);
     std::set<std::string, std::less<>> macros = {"__LINE__", "__FILE__", "__VERSION__"};
     bool seen_code = false;  // a non-preprocessor token
     int depth = 0;           // brace depth: > 0 inside a function definition
