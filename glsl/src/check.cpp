@@ -13,6 +13,7 @@
 #include "info_log.h"
 #include "source_text.h"
 #include "strict/strict.h"
+#include "version_gate.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -51,7 +52,13 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   // The text glslang parses keeps every line and column of the user's (source_text.h).
   std::vector<std::string> texts;
   for (const compiler::SourceFile* file : sources) {
-    const std::string blanked = ReportInvalidCharacters(*file, sink);
+    std::string blanked = ReportInvalidCharacters(*file, sink);
+    // #version belongs to the first string (3.3: before anything else).
+    std::string gated;
+    if (texts.empty() &&
+        GateVersion(*file, blanked.empty() ? file->text() : blanked, &gated, sink)) {
+      blanked = std::move(gated);
+    }
     texts.push_back(PrepareForGlslang(blanked.empty() ? file->text() : blanked));
   }
   std::vector<const char*> strings;

@@ -259,6 +259,31 @@ TEST(Diagnostics, ColumnFromQuotedToken) {
               ElementsAre("2:25 glsl-version"));
 }
 
+// 3.3: "Any number less than 110 will cause an error to be generated. Any number greater
+// than the latest version of the language a compiler supports will also cause an error";
+// arbiter supports 1.10 only. The error is at the number, and the rest is checked as 1.10:
+// `float x = 1;` is an error in 1.10 (no implicit conversion), not in 1.20.
+TEST(Diagnostics, VersionOtherThan110) {
+  const std::string body = "void main() { float x = 1; gl_Position = vec4(x); }\n";
+  EXPECT_THAT(Check(Stage::Vertex, "#version 110\n" + body),
+              ElementsAre("2:23 glsl-type-mismatch"));
+  EXPECT_THAT(Check(Stage::Vertex, "#version 120\n" + body),
+              ElementsAre("1:10 glsl-version", "2:23 glsl-type-mismatch"));
+  EXPECT_THAT(
+      Check(Stage::Vertex, "/* a\n comment */ // and another\n  #  version   460 core\n" + body),
+      ElementsAre("3:16 glsl-version", "4:23 glsl-type-mismatch"));
+  EXPECT_THAT(Check(Stage::Vertex, "#version 109\r\n" + std::string(kMain)),
+              ElementsAre("1:10 glsl-version"));
+  // 100 is OpenGL ES for glslang; 0110 is octal 72 for a preprocessor.
+  EXPECT_THAT(Check(Stage::Vertex, "#version 100\n" + std::string(kMain)),
+              ElementsAre("1:10 glsl-version"));
+  EXPECT_THAT(Check(Stage::Vertex, "#version 0110\n" + std::string(kMain)),
+              ElementsAre("1:10 glsl-version"));
+  // Not the shader's first token: glslang says so at the directive, and checks as 1.10.
+  EXPECT_THAT(Check(Stage::Vertex, "float f;\n#version 999\n" + body),
+              ElementsAre("2:10 glsl-version", "2:1 glsl-version", "3:23 glsl-type-mismatch"));
+}
+
 TEST(Diagnostics, SeveralStringsKeepTheirNames) {
   compiler::SourceFile a("a.glsl", "uniform vec4 tint;\n");
   compiler::SourceFile b("b.glsl", "void main() {\n  gl_FragColor = tint * nope;\n}\n");

@@ -1,5 +1,4 @@
 // GLSL 1.10 section 3.3 (the preprocessor), where glslang 12 is laxer than the 1.10 text:
-// - "#version": "Any number less than 110 will cause an error" (glslang takes 100 as ES);
 // - "#extension ... directives must occur before any non-preprocessor tokens";
 // - "#pragma optimize/debug ... can only be used outside function definitions";
 // - identifiers and macro names containing "__" are reserved (glslang only warns);
@@ -78,15 +77,6 @@ void CheckPreprocessor(const StrictContext& ctx) {
           macros.emplace(words[1].text);
         } else if (directive == "undef" && words.size() > 1) {
           macros.erase(std::string(words[1].text));
-        } else if (directive == "version" && words.size() > 1 &&
-                   std::isdigit(static_cast<unsigned char>(words[1].text[0]))) {
-          int version = std::atoi(std::string(words[1].text).c_str());
-          if (version < 110) {
-            report(Diag::Version, pos + words[1].offset, words[1].text.size(),
-                   fmt::format("#version {} is below 110; GLSL 1.10 requires an error for any "
-                               "number less than 110 (100 is OpenGL ES)",
-                               version));
-          }
         } else if (directive == "extension" && seen_code) {
           report(Diag::Preprocessor, pos + words[0].offset, words[0].text.size(),
                  "#extension must come before any non-preprocessor token of the shader");
