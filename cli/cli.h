@@ -27,16 +27,19 @@ Exit Worse(Exit a, Exit b);
 struct Input {
   std::string path;          // as given, or as found under a given directory; "-" is stdin
   std::string display_path;  // "<stdin>" for "-"
-  std::string error;         // set when the argument cannot give a program (empty directory)
-  bool found = false;        // found under a directory argument, not named
+  std::string error;   // set when the argument cannot give a program (unreadable, empty directory)
+  bool found = false;  // found under a directory argument, not named
+  // A named file is read while the arguments are expanded; ReadInput takes the bytes (and
+  // reads the file again if asked twice).
+  mutable std::optional<std::string> bytes;
 };
 
-// Expands files and directories (recursively, sorted; ARB and GLSL file extensions).
-// Missing paths are kept: reading them reports the error.
+// Expands files and directories (recursively, sorted; ARB and GLSL file extensions) and
+// reads the files named. Unreadable paths are kept: ReadInput reports the error.
 std::vector<Input> ExpandInputs(const std::vector<std::string>& args);
 
-// Reads an input into a SourceFile; on failure returns null and adds an `io-read` error to
-// `report`.
+// Reads an input into a SourceFile (taking the bytes ExpandInputs read); on failure returns
+// null and adds an `io-read` error to `report`.
 std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::FileReport* report);
 
 // --format, --color, --error-limit, -Werror, --limits, --stage shared by check and info.

@@ -17,7 +17,9 @@ struct LinkCommandOptions {
   std::vector<std::string> frag;   // --frag: the fragment shader's strings, in order
 };
 
-Input MakeInput(const std::string& path) { return {path, path == "-" ? "<stdin>" : path, {}}; }
+Input MakeInput(const std::string& path) {
+  return {path, path == "-" ? "<stdin>" : path, {}, false, {}};
+}
 
 // Reads a stage's inputs, one report per file.
 void ReadStage(const std::vector<Input>& inputs, std::vector<const compiler::SourceFile*>* sources,

@@ -53,26 +53,44 @@ Exit Worse(Exit a, Exit b) {
 std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
   std::vector<Input> inputs;
   for (const std::string& arg : args) {
-    std::error_code ec;
-    if (arg != "-" && std::filesystem::is_directory(arg, ec)) {
-      std::vector<std::string> found;
-      auto options = std::filesystem::directory_options::skip_permission_denied;
-      for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
-           !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-        if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
-          found.push_back(it->path().generic_string());
-        }
-      }
-      std::sort(found.begin(), found.end());
-      if (found.empty()) {
-        inputs.push_back({arg, arg,
-                          "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
-                          "this directory"});
-      }
-      for (std::string& path : found) inputs.push_back({path, path, {}, true});
+    if (arg == "-") {
+      inputs.push_back({arg, "<stdin>", {}, false, {}});
       continue;
     }
-    inputs.push_back({arg, arg == "-" ? "<stdin>" : arg, {}});
+    // One open tells a directory from a file and reads the file: no stat per named file
+    // (docs/performance.md).
+    Input input{arg, arg, {}, false, {}};
+    std::string bytes;
+    switch (compiler::ReadFileOrDirectory(arg, &bytes, &input.error)) {
+      case compiler::ReadOutcome::Read:
+        input.bytes = std::move(bytes);
+        inputs.push_back(std::move(input));
+        continue;
+      case compiler::ReadOutcome::Failed:
+        inputs.push_back(std::move(input));
+        continue;
+      case compiler::ReadOutcome::Directory:
+        break;
+    }
+    std::error_code ec;
+    std::vector<std::string> found;
+    auto options = std::filesystem::directory_options::skip_permission_denied;
+    for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+      if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
+        found.push_back(it->path().generic_string());
+      }
+    }
+    std::sort(found.begin(), found.end());
+    if (found.empty()) {
+      inputs.push_back({arg,
+                        arg,
+                        "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
+                        "this directory",
+                        false,
+                        {}});
+    }
+    for (std::string& path : found) inputs.push_back({path, path, {}, true, {}});
   }
   return inputs;
 }
@@ -80,7 +98,10 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
 std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::FileReport* report) {
   std::string bytes;
   std::string error = input.error;
-  if (!error.empty() || !compiler::ReadFileBytes(input.path, &bytes, &error)) {
+  if (input.bytes) {
+    bytes = std::move(*input.bytes);
+    input.bytes.reset();
+  } else if (!error.empty() || !compiler::ReadFileBytes(input.path, &bytes, &error)) {
     compiler::Diagnostic d;
     d.info = &kIoRead;
     d.severity = compiler::Severity::Error;

@@ -14,7 +14,8 @@ Exit LoadArbPrograms(const CommonOptions& options, std::vector<LoadedArb>* loade
     if (input.found && glsl::StageFromPath(input.path)) continue;
     compiler::FileReport report;
     report.path = input.display_path;
-    LoadedArb l{input, ReadInput(input, &report), {}};
+    std::unique_ptr<compiler::SourceFile> source = ReadInput(input, &report);  // takes the bytes
+    LoadedArb l{input, std::move(source), {}};
     if (!l.source) {
       exit = Worse(exit, Exit::Environment);
     } else {

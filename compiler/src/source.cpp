@@ -151,22 +151,40 @@ bool CheckSize(const std::string& bytes, std::string* error) {
 }  // namespace
 
 bool ReadFileBytes(const std::string& path, std::string* bytes, std::string* error) {
+  switch (ReadFileOrDirectory(path, bytes, error)) {
+    case ReadOutcome::Read:
+      return true;
+    case ReadOutcome::Directory:
+      *error = ErrnoReason(EISDIR);
+      return false;
+    case ReadOutcome::Failed:
+      return false;
+  }
+  return false;
+}
+
+ReadOutcome ReadFileOrDirectory(const std::string& path, std::string* bytes, std::string* error) {
   bytes->clear();
   if (path == "-") {
-    return ReadStream(stdin, bytes, error) && CheckSize(*bytes, error);
+    return ReadStream(stdin, bytes, error) && CheckSize(*bytes, error) ? ReadOutcome::Read
+                                                                       : ReadOutcome::Failed;
   }
   // open, fstat, one read, close: a batch reads thousands of small files, and the system
   // calls were half of checking one (docs/performance.md).
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
     *error = ErrnoReason(errno);
-    return false;
+    return ReadOutcome::Failed;
   }
   struct stat info {};
-  if (::fstat(fd, &info) != 0 || S_ISDIR(info.st_mode)) {
-    *error = ErrnoReason(S_ISDIR(info.st_mode) ? EISDIR : errno);
+  if (::fstat(fd, &info) != 0) {
+    *error = ErrnoReason(errno);
     ::close(fd);
-    return false;
+    return ReadOutcome::Failed;
+  }
+  if (S_ISDIR(info.st_mode)) {
+    ::close(fd);
+    return ReadOutcome::Directory;
   }
   // A regular file's size is known: ask for one byte more, and a short read is its end.
   // Pipes, devices and a file that grows go on until read says end of file.
@@ -191,7 +209,7 @@ bool ReadFileBytes(const std::string& path, std::string* bytes, std::string* err
     chunk = 1 << 16;
   }
   ::close(fd);
-  return ok && CheckSize(*bytes, error);
+  return ok && CheckSize(*bytes, error) ? ReadOutcome::Read : ReadOutcome::Failed;
 }
 
 bool WriteFileAtomically(const std::string& path, std::string_view bytes, std::string* error) {

@@ -245,6 +245,21 @@ TEST(ReadFileBytesTest, Directory) {
   EXPECT_EQ(error, "is a directory");
 }
 
+// The batch reader: one open tells a directory from a file (then read) or a failure.
+TEST(ReadFileOrDirectoryTest, TellsTheThreeApart) {
+  const TempDir dir;
+  WriteRaw(dir.path() / "a.fp", "!!ARBfp1.0\nEND\n");
+  std::string read = "stale";
+  std::string error;
+  EXPECT_EQ(ReadFileOrDirectory(dir.path().string(), &read, &error), ReadOutcome::Directory);
+  EXPECT_EQ(read, "");
+  EXPECT_EQ(ReadFileOrDirectory((dir.path() / "a.fp").string(), &read, &error), ReadOutcome::Read);
+  EXPECT_EQ(read, "!!ARBfp1.0\nEND\n");
+  EXPECT_EQ(ReadFileOrDirectory((dir.path() / "b.fp").string(), &read, &error),
+            ReadOutcome::Failed);
+  EXPECT_EQ(error, "no such file or directory");
+}
+
 TEST(ReadFileBytesTest, PermissionDenied) {
   if (::geteuid() == 0) {
     GTEST_SKIP() << "root reads every file";

@@ -50,6 +50,12 @@ class SourceFile {
 // denied", ...) without the path. Inputs over 4 GiB are refused (offsets are 32-bit).
 [[nodiscard]] bool ReadFileBytes(const std::string& path, std::string* bytes, std::string* error);
 
+// ReadFileBytes that tells a directory apart instead of failing on it: one open serves to
+// learn what a path names and to read it (a batch names thousands of files).
+enum class ReadOutcome { Read, Directory, Failed };
+[[nodiscard]] ReadOutcome ReadFileOrDirectory(const std::string& path, std::string* bytes,
+                                              std::string* error);
+
 // Writes `bytes` to `path` atomically (temporary file in the same folder, fsync, then
 // rename; the temporary is removed on failure). A replaced file keeps its permissions.
 // "-" is not special here: writing to standard output is the caller's business. On
