@@ -206,11 +206,6 @@ void InfoShader(glsl::Stage stage, const std::vector<Input>& inputs, InfoOutput*
 }  // namespace
 
 int RunInfo(const CommonOptions& options) {
-  if (options.format == "sarif") {
-    std::fputs("arbiter: error: info prints text or json; sarif is for diagnostics (check)\n",
-               stderr);
-    return static_cast<int>(Exit::Usage);
-  }
   std::optional<compiler::LimitProfile> profile;
   std::optional<arbvp::ProgramKind> stage;
   if (!ResolveLimits(options, &profile) || !ResolveStage(options, &stage)) {

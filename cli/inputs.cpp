@@ -116,8 +116,10 @@ std::unique_ptr<compiler::SourceFile> ReadInput(const Input& input, compiler::Fi
 void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
   app->add_option("files", options->files, "program files or directories ('-' reads stdin)")
       ->required();
+  // SARIF reports diagnostics: info has none to give.
   app->add_option("--format", options->format, "output format")
-      ->check(CLI::IsMember({"text", "json", "sarif"}));
+      ->check(diagnostics ? CLI::IsMember({"text", "json", "sarif"})
+                          : CLI::IsMember({"text", "json"}));
   app->add_option("--color", options->color, "colour text output")
       ->check(CLI::IsMember({"auto", "always", "never"}));
   app->add_option("--limits", options->limits,

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CommonOptions check_options;
-  CLI::App* check = app.add_subcommand("check", "validate ARB vertex/fragment programs");
+  CLI::App* check =
+      app.add_subcommand("check", "validate ARB vertex/fragment programs and GLSL 1.10 shaders");
   arbiter::cli::AddCommonOptions(check, &check_options, /*diagnostics=*/true);
   arbiter::cli::AddDriverCheckOptions(check, &check_options);
 

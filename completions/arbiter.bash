@@ -50,7 +50,7 @@ _arbiter() {
       files="$arb|$glsl" formats="text json sarif" stages="arbvp arbfp vert frag" ;;
     info)
       options="-h --help --format --color --limits --stage"
-      files="$arb|$glsl" formats="text json sarif" stages="arbvp arbfp vert frag" ;;
+      files="$arb|$glsl" formats="text json" stages="arbvp arbfp vert frag" ;;
     link)
       options="-h --help --vert --frag --format --color --limits --error-limit -W --Werror"
       files="$glsl" formats="text json sarif" ;;
