@@ -18,7 +18,7 @@ echo "${#files[@]} programs under $dir; single file: $one"
 hyperfine -N -i --warmup 3 --runs "${RUNS:-20}" --export-markdown "${EXPORT:-/dev/null}" \
   -n "arbiter check (all files)" "$arbiter check ${files[*]}" \
   -n "arbiter check -j 1 (all files)" "$arbiter check -j 1 ${files[*]}" \
-  -n "cat (all files: the cost of reading them)" "cat ${files[*]}" \
+  -n "read_files (all files: what reading them costs)" "$build/bench/read_files ${files[*]}" \
   -n "mesa_load_arb (all files)" "$mesa ${files[*]}" \
   -n "arbiter check (one file)" "$arbiter check $one" \
   -n "mesa_load_arb (one file)" "$mesa $one" \
