@@ -14,6 +14,12 @@
 namespace arbiter::cli {
 namespace {
 
+// A thread costs its start and a malloc arena of its own, and small inputs contend for the
+// file system more than they compute: the 563 ARB programs of the corpus check in 14 ms on
+// one thread and 17 on two (docs/performance.md). So a batch runs on the calling thread
+// until it has lasted this long, and only then on -j threads.
+constexpr auto kAlone = std::chrono::milliseconds(20);
+
 // Reading failures are diagnostics without a file position.
 const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
@@ -21,7 +27,15 @@ const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
 // Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
 // ARB header (formats.md), and GLSL .vert .vs .frag .fs.
 bool IsProgramFile(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
+  // The name as a view: a directory walk meets thousands of them (no path or string copies).
+  const std::string_view name = path.native();
+  const size_t dot = name.rfind('.');
+  // No extension: no dot in the file name, or only a leading one (".vp" is a hidden file).
+  if (dot == std::string_view::npos || dot == 0 || name[dot - 1] == '/' ||
+      name.find('/', dot) != std::string_view::npos) {
+    return false;
+  }
+  const std::string_view ext = name.substr(dot);
   if (ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp") return true;
   if (ext == ".vert" || ext == ".vs" || ext == ".frag" || ext == ".fs") return true;
   if (ext != ".txt") return false;
@@ -51,28 +65,35 @@ Exit Worse(Exit a, Exit b) {
 }
 
 std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
+  const auto start = std::chrono::steady_clock::now();
   std::vector<Input> inputs;
   for (const std::string& arg : args) {
     if (arg == "-") {
       inputs.push_back({arg, "<stdin>", {}, false, {}});
       continue;
     }
-    // One open tells a directory from a file and reads the file: no stat per named file
-    // (docs/performance.md).
-    Input input{arg, arg, {}, false, {}};
-    std::string bytes;
-    switch (compiler::ReadFileOrDirectory(arg, &bytes, &input.error)) {
-      case compiler::ReadOutcome::Read:
-        input.bytes = std::move(bytes);
-        inputs.push_back(std::move(input));
-        continue;
-      case compiler::ReadOutcome::Failed:
-        inputs.push_back(std::move(input));
-        continue;
-      case compiler::ReadOutcome::Directory:
-        break;
-    }
+    // A short batch runs on this thread (ParallelFor): one open tells a directory from a file
+    // and reads the file, where a stat and a later open took five system calls. Past kAlone
+    // a stat tells them apart and the workers read the files, in parallel.
     std::error_code ec;
+    if (std::chrono::steady_clock::now() - start < kAlone) {
+      Input input{arg, arg, {}, false, {}};
+      std::string bytes;
+      switch (compiler::ReadFileOrDirectory(arg, &bytes, &input.error)) {
+        case compiler::ReadOutcome::Read:
+          input.bytes = std::move(bytes);
+          inputs.push_back(std::move(input));
+          continue;
+        case compiler::ReadOutcome::Failed:
+          inputs.push_back(std::move(input));
+          continue;
+        case compiler::ReadOutcome::Directory:
+          break;
+      }
+    } else if (!std::filesystem::is_directory(arg, ec)) {
+      inputs.push_back({arg, arg, {}, false, {}});
+      continue;
+    }
     std::vector<std::string> found;
     auto options = std::filesystem::directory_options::skip_permission_denied;
     for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
@@ -148,11 +169,7 @@ void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>
   auto work = [&] {
     for (size_t i = next++; i < count; i = next++) body(i);
   };
-  // A thread costs its start and a malloc arena of its own, and small inputs contend for the
-  // file system more than they compute: the 563 ARB programs of the corpus check in 14 ms
-  // on one thread and 17 on two (docs/performance.md). So the calling thread starts alone
-  // and calls the others only once the batch has lasted kAlone.
-  constexpr auto kAlone = std::chrono::milliseconds(20);
+  // The calling thread starts alone and calls the others once the batch has lasted kAlone.
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> pool;
   for (size_t i = next++; i < count; i = next++) {
