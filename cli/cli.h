@@ -73,6 +73,10 @@ std::optional<glsl::Stage> GlslStage(const CommonOptions& options, const Input& 
 
 // Prints the reports in the chosen format (text to stderr, json/sarif to stdout).
 void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options);
+// The text renderer's options (--color, the terminal); and the printing of reports a batch
+// has rendered as text in its workers, in order, in one write.
+compiler::TextOptions TextOptionsFor(const CommonOptions& options);
+void PrintText(const std::vector<std::string>& rendered);
 
 int RunCheck(const CommonOptions& options);
 int RunInfo(const CommonOptions& options);
