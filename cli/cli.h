@@ -57,6 +57,14 @@ struct CommonOptions {
   std::vector<std::string> files;
 };
 
+// glibc's malloc gives memory back to the kernel and grows a thread's heap a few pages at a
+// time; with two threads each such change also flushes the other core's TLB (an
+// inter-processor interrupt, dear in a VM). For check, a batch process that exits when
+// done, keeping what it got makes -j 2 7 % faster on ARB programs and 3 % on GLSL shaders.
+// Not for verify and run: Mesa's large calloc()s would then be cleared by hand instead of
+// coming as fresh pages (verify -j 2 took 1.28x as long). docs/performance.md.
+void KeepMallocMemory();
+
 // The number of worker threads -j asks for (0: one per core).
 size_t ResolveJobs(const CommonOptions& options);
 // Runs body(0) ... body(count - 1) on up to `threads` threads (the caller's among them),

@@ -78,6 +78,7 @@ Checked CheckOneShader(const std::vector<Input>& inputs, const CommonOptions& op
 }  // namespace
 
 int RunCheck(const CommonOptions& options) {
+  KeepMallocMemory();
   std::optional<compiler::LimitProfile> profile;
   std::optional<arbvp::ProgramKind> stage;
   if (!ResolveLimits(options, &profile) || !ResolveStage(options, &stage)) {

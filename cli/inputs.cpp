@@ -1,5 +1,8 @@
 // Command-line inputs: directory expansion, reading files and stdin, shared options.
 #include <fmt/format.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -156,6 +159,14 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
     app->add_option("-j,--jobs", options->jobs, "worker threads (default: one per core)")
         ->check(CLI::NonNegativeNumber);
   }
+}
+
+void KeepMallocMemory() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's own upper bound for its dynamic threshold
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_TOP_PAD, 16 << 20);  // address space only: pages are touched as used
+#endif
 }
 
 size_t ResolveJobs(const CommonOptions& options) {
