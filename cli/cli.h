@@ -35,8 +35,9 @@ struct Input {
 };
 
 // Expands files and directories (recursively, sorted; ARB and GLSL file extensions) and
-// reads the files named. Unreadable paths are kept: ReadInput reports the error.
-std::vector<Input> ExpandInputs(const std::vector<std::string>& args);
+// reads the files named early in the batch; `threads` as for ParallelFor. Unreadable paths
+// are kept: ReadInput reports the error.
+std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t threads);
 
 // Reads an input into a SourceFile (taking the bytes ExpandInputs read); on failure returns
 // null and adds an `io-read` error to `report`.
@@ -68,7 +69,9 @@ void KeepMallocMemory();
 // The number of worker threads -j asks for (0: one per core).
 size_t ResolveJobs(const CommonOptions& options);
 // Runs body(0) ... body(count - 1) on up to `threads` threads (the caller's among them),
-// each index once; a body writes only its own index's result.
+// each index once; a body writes only its own index's result. The caller's thread works
+// alone until the batch (from its ExpandInputs) has lasted 20 ms: short batches gain
+// nothing from a second thread.
 void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>& body);
 void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);
 

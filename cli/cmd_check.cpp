@@ -88,7 +88,7 @@ int RunCheck(const CommonOptions& options) {
   arb_options.profile = profile ? &*profile : nullptr;
   arb_options.expected_kind = stage;
 
-  std::vector<Input> inputs = ExpandInputs(options.files);
+  std::vector<Input> inputs = ExpandInputs(options.files, ResolveJobs(options));
   std::vector<Checked> results;
   std::vector<std::unique_ptr<compiler::SourceFile>> strings;
   if (options.stage == "vert" || options.stage == "frag") {

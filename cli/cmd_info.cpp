@@ -216,7 +216,7 @@ int RunInfo(const CommonOptions& options) {
   check_options.expected_kind = stage;
 
   InfoOutput out;
-  std::vector<Input> inputs = ExpandInputs(options.files);
+  std::vector<Input> inputs = ExpandInputs(options.files, ResolveJobs(options));
   if (options.stage == "vert" || options.stage == "frag") {
     // The files are the strings of one shader, as for check.
     if (!inputs.empty()) {

@@ -23,6 +23,12 @@ namespace {
 // until it has lasted this long, and only then on -j threads.
 constexpr auto kAlone = std::chrono::milliseconds(20);
 
+// When the batch began: the first call, which ExpandInputs makes before anything else.
+std::chrono::steady_clock::time_point BatchStart() {
+  static const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  return start;
+}
+
 // Reading failures are diagnostics without a file position.
 const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
@@ -48,6 +54,34 @@ bool IsProgramFile(const std::filesystem::path& path) {
   return in.gcount() == 5 && std::string_view(head, 5) == "!!ARB";
 }
 
+constexpr auto kSkipDenied = std::filesystem::directory_options::skip_permission_denied;
+
+// Adds the program files directly in `dir` to `found` and its subdirectories (not links to
+// them, which are not followed) to `subdirectories`.
+void ListDirectory(const std::filesystem::path& dir, std::vector<std::string>* found,
+                   std::vector<std::filesystem::path>* subdirectories) {
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(dir, kSkipDenied, ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    if (it->is_directory(ec) && !it->is_symlink(ec)) {
+      subdirectories->push_back(it->path());
+    } else if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
+      found->push_back(it->path().generic_string());
+    }
+  }
+}
+
+// Adds the program files anywhere under `dir` to `found`.
+void WalkDirectory(const std::filesystem::path& dir, std::vector<std::string>* found) {
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, kSkipDenied, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
+      found->push_back(it->path().generic_string());
+    }
+  }
+}
+
 }  // namespace
 
 Exit Worse(Exit a, Exit b) {
@@ -67,54 +101,70 @@ Exit Worse(Exit a, Exit b) {
   return rank(a) >= rank(b) ? a : b;
 }
 
-std::vector<Input> ExpandInputs(const std::vector<std::string>& args) {
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<Input> inputs;
-  for (const std::string& arg : args) {
-    if (arg == "-") {
-      inputs.push_back({arg, "<stdin>", {}, false, {}});
-      continue;
-    }
-    // A short batch runs on this thread (ParallelFor): one open tells a directory from a file
-    // and reads the file, where a stat and a later open took five system calls. Past kAlone
-    // a stat tells them apart and the workers read the files, in parallel.
-    std::error_code ec;
-    if (std::chrono::steady_clock::now() - start < kAlone) {
-      Input input{arg, arg, {}, false, {}};
+std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t threads) {
+  BatchStart();
+  // Each argument is classified first, in parallel once the batch has lasted kAlone (a long
+  // list of names is a system call or more per name, most of a big batch's serial part).
+  // Within kAlone one open tells a directory from a file and reads the file: four system
+  // calls, where a stat and a later open took five. Past it a stat tells them apart and the
+  // workers read the files, so that a long batch does not hold every file in memory.
+  std::vector<Input> named(args.size());
+  std::vector<char> directory(args.size(), 0);
+  std::vector<std::vector<std::string>> found(args.size());
+  std::vector<std::vector<std::filesystem::path>> subdirectories(args.size());
+  ParallelFor(args.size(), threads, [&](size_t i) {
+    const std::string& arg = args[i];
+    Input& input = named[i];
+    input = {arg, arg == "-" ? "<stdin>" : arg, {}, false, {}};
+    if (arg == "-") return;
+    if (std::chrono::steady_clock::now() - BatchStart() < kAlone) {
       std::string bytes;
       switch (compiler::ReadFileOrDirectory(arg, &bytes, &input.error)) {
         case compiler::ReadOutcome::Read:
           input.bytes = std::move(bytes);
-          inputs.push_back(std::move(input));
-          continue;
+          return;
         case compiler::ReadOutcome::Failed:
-          inputs.push_back(std::move(input));
-          continue;
+          return;
         case compiler::ReadOutcome::Directory:
           break;
       }
-    } else if (!std::filesystem::is_directory(arg, ec)) {
-      inputs.push_back({arg, arg, {}, false, {}});
+    } else if (std::error_code ec; !std::filesystem::is_directory(arg, ec)) {
+      return;
+    }
+    directory[i] = 1;
+    ListDirectory(arg, &found[i], &subdirectories[i]);
+  });
+  // The subdirectories of the directories named are walked in parallel too.
+  std::vector<std::pair<size_t, const std::filesystem::path*>> walks;
+  for (size_t i = 0; i < args.size(); ++i) {
+    for (const std::filesystem::path& sub : subdirectories[i]) walks.emplace_back(i, &sub);
+  }
+  std::vector<std::vector<std::string>> walked(walks.size());
+  ParallelFor(walks.size(), threads,
+              [&](size_t w) { WalkDirectory(*walks[w].second, &walked[w]); });
+  for (size_t w = 0; w < walks.size(); ++w) {
+    std::vector<std::string>& into = found[walks[w].first];
+    into.insert(into.end(), std::make_move_iterator(walked[w].begin()),
+                std::make_move_iterator(walked[w].end()));
+  }
+
+  std::vector<Input> inputs;
+  inputs.reserve(args.size());
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (!directory[i]) {
+      inputs.push_back(std::move(named[i]));
       continue;
     }
-    std::vector<std::string> found;
-    auto options = std::filesystem::directory_options::skip_permission_denied;
-    for (auto it = std::filesystem::recursive_directory_iterator(arg, options, ec);
-         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-      if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
-        found.push_back(it->path().generic_string());
-      }
-    }
-    std::sort(found.begin(), found.end());
-    if (found.empty()) {
-      inputs.push_back({arg,
-                        arg,
+    std::sort(found[i].begin(), found[i].end());
+    if (found[i].empty()) {
+      inputs.push_back({args[i],
+                        args[i],
                         "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
                         "this directory",
                         false,
                         {}});
     }
-    for (std::string& path : found) inputs.push_back({path, path, {}, true, {}});
+    for (std::string& path : found[i]) inputs.push_back({path, path, {}, true, {}});
   }
   return inputs;
 }
@@ -180,13 +230,13 @@ void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>
   auto work = [&] {
     for (size_t i = next++; i < count; i = next++) body(i);
   };
-  // The calling thread starts alone and calls the others once the batch has lasted kAlone.
-  const auto start = std::chrono::steady_clock::now();
+  // The calling thread starts alone and calls the others once the batch has lasted kAlone,
+  // its argument expansion included.
   std::vector<std::thread> pool;
   for (size_t i = next++; i < count; i = next++) {
     body(i);
     if (pool.empty() && threads > 1 && next < count &&
-        std::chrono::steady_clock::now() - start > kAlone) {
+        std::chrono::steady_clock::now() - BatchStart() > kAlone) {
       for (size_t t = 1; t < std::min(threads, count - next + 1); ++t) pool.emplace_back(work);
     }
   }

@@ -9,7 +9,7 @@ Exit LoadArbPrograms(const CommonOptions& options, std::vector<LoadedArb>* loade
   if (!ResolveLimits(options, &profile)) return Exit::Usage;
   std::vector<compiler::FileReport> reports;
   Exit exit = Exit::Ok;
-  for (const Input& input : ExpandInputs(options.files)) {
+  for (const Input& input : ExpandInputs(options.files, ResolveJobs(options))) {
     // A directory may hold GLSL shaders beside the ARB programs: those are check's alone.
     if (input.found && glsl::StageFromPath(input.path)) continue;
     compiler::FileReport report;
