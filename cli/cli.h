@@ -70,7 +70,7 @@ void KeepMallocMemory();
 size_t ResolveJobs(const CommonOptions& options);
 // Runs body(0) ... body(count - 1) on up to `threads` threads (the caller's among them),
 // each index once; a body writes only its own index's result. The caller's thread works
-// alone until the batch (from its ExpandInputs) has lasted 20 ms: short batches gain
+// alone until the batch (from its ExpandInputs) has lasted 2 ms: short batches gain
 // nothing from a second thread.
 void ParallelFor(size_t count, size_t threads, const std::function<void(size_t)>& body);
 void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics);

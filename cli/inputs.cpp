@@ -17,11 +17,17 @@
 namespace arbiter::cli {
 namespace {
 
-// A thread costs its start and a malloc arena of its own, and small inputs contend for the
-// file system more than they compute: the 563 ARB programs of the corpus check in 14 ms on
-// one thread and 17 on two (docs/performance.md). So a batch runs on the calling thread
-// until it has lasted this long, and only then on -j threads.
-constexpr auto kAlone = std::chrono::milliseconds(20);
+// A thread costs its start (0.2 to 0.3 ms of a 3 ms check of ten ARB programs), so a batch
+// runs on the calling thread until it has lasted this long, and then on -j threads: from
+// there a second thread pays (the 563 ARB programs of the corpus check 1.13x faster than
+// with a 20 ms window; docs/performance.md).
+constexpr auto kAlone = std::chrono::milliseconds(2);
+
+// Named files are read while the arguments are classified, for this long: one open tells a
+// directory from a file and reads it (four system calls, where a stat and a later open took
+// five). Past it a stat tells them apart and the workers read the files, so that a long
+// batch does not hold every file in memory at once.
+constexpr auto kReadAhead = std::chrono::milliseconds(20);
 
 // When the batch began: the first call, which ExpandInputs makes before anything else.
 std::chrono::steady_clock::time_point BatchStart() {
@@ -103,11 +109,8 @@ Exit Worse(Exit a, Exit b) {
 
 std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t threads) {
   BatchStart();
-  // Each argument is classified first, in parallel once the batch has lasted kAlone (a long
-  // list of names is a system call or more per name, most of a big batch's serial part).
-  // Within kAlone one open tells a directory from a file and reads the file: four system
-  // calls, where a stat and a later open took five. Past it a stat tells them apart and the
-  // workers read the files, so that a long batch does not hold every file in memory.
+  // Each argument is classified first, on the -j threads: for a long list of names that is
+  // a system call or more per name, on one thread the largest serial part of a big batch.
   std::vector<Input> named(args.size());
   std::vector<char> directory(args.size(), 0);
   std::vector<std::vector<std::string>> found(args.size());
@@ -117,7 +120,7 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t thr
     Input& input = named[i];
     input = {arg, arg == "-" ? "<stdin>" : arg, {}, false, {}};
     if (arg == "-") return;
-    if (std::chrono::steady_clock::now() - BatchStart() < kAlone) {
+    if (std::chrono::steady_clock::now() - BatchStart() < kReadAhead) {
       std::string bytes;
       switch (compiler::ReadFileOrDirectory(arg, &bytes, &input.error)) {
         case compiler::ReadOutcome::Read:
