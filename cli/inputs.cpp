@@ -1,5 +1,7 @@
 // Command-line inputs: directory expansion, reading files and stdin, shared options.
+#include <dirent.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -41,9 +43,8 @@ const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
 
 // Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
 // ARB header (formats.md), and GLSL .vert .vs .frag .fs.
-bool IsProgramFile(const std::filesystem::path& path) {
-  // The name as a view: a directory walk meets thousands of them (no path or string copies).
-  const std::string_view name = path.native();
+bool IsProgramFile(const std::string& path) {
+  const std::string_view name = path;
   const size_t dot = name.rfind('.');
   // No extension: no dot in the file name, or only a leading one (".vp" is a hidden file).
   if (dot == std::string_view::npos || dot == 0 || name[dot - 1] == '/' ||
@@ -60,32 +61,71 @@ bool IsProgramFile(const std::filesystem::path& path) {
   return in.gcount() == 5 && std::string_view(head, 5) == "!!ARB";
 }
 
-constexpr auto kSkipDenied = std::filesystem::directory_options::skip_permission_denied;
-
-// Adds the program files directly in `dir` to `found` and its subdirectories (not links to
-// them, which are not followed) to `subdirectories`.
-void ListDirectory(const std::filesystem::path& dir, std::vector<std::string>* found,
-                   std::vector<std::filesystem::path>* subdirectories) {
-  std::error_code ec;
-  for (auto it = std::filesystem::directory_iterator(dir, kSkipDenied, ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
-    if (it->is_directory(ec) && !it->is_symlink(ec)) {
-      subdirectories->push_back(it->path());
-    } else if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
-      found->push_back(it->path().generic_string());
-    }
+// What a directory entry is, links followed except to directories (a walk does not follow
+// those, as `find` does not): most file systems say it in the entry, others need an lstat.
+enum class EntryKind { Directory, File, Other };
+EntryKind KindOf(const dirent& entry, const std::string& path) {
+  unsigned char type = entry.d_type;
+  struct stat st;
+  if (type == DT_UNKNOWN) {
+    if (lstat(path.c_str(), &st) != 0) return EntryKind::Other;
+    if (S_ISDIR(st.st_mode)) return EntryKind::Directory;
+    if (S_ISREG(st.st_mode)) return EntryKind::File;
+    type = S_ISLNK(st.st_mode) ? DT_LNK : DT_UNKNOWN;
   }
+  if (type == DT_DIR) return EntryKind::Directory;
+  if (type == DT_REG) return EntryKind::File;
+  if (type == DT_LNK && stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+    return EntryKind::File;
+  }
+  return EntryKind::Other;
 }
 
-// Adds the program files anywhere under `dir` to `found`.
-void WalkDirectory(const std::filesystem::path& dir, std::vector<std::string>* found) {
-  std::error_code ec;
-  for (auto it = std::filesystem::recursive_directory_iterator(dir, kSkipDenied, ec);
-       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file(ec) && IsProgramFile(it->path())) {
-      found->push_back(it->path().generic_string());
+// Adds the program files directly in the directory `prefix` (its path as printed, ending in
+// '/') to `files` and its subdirectories (ending in '/') to `subdirectories`. A directory that
+// cannot be read is skipped, as by `find`. POSIX readdir, not std::filesystem: its iterator
+// parses every path it builds into components, most of a walk's time.
+void ListDirectory(const std::string& prefix, std::vector<std::string>* files,
+                   std::vector<std::string>* subdirectories) {
+  DIR* dir = opendir(prefix.c_str());
+  if (dir == nullptr) return;
+  while (const dirent* entry = readdir(dir)) {
+    const std::string_view name = entry->d_name;
+    if (name == "." || name == "..") continue;
+    std::string path = prefix;
+    path += name;
+    switch (KindOf(*entry, path)) {
+      case EntryKind::Directory:
+        path += '/';
+        subdirectories->push_back(std::move(path));
+        break;
+      case EntryKind::File:
+        if (IsProgramFile(path)) files->push_back(std::move(path));
+        break;
+      case EntryKind::Other:
+        break;
     }
   }
+  closedir(dir);
+}
+
+// The program files anywhere under the directory `prefix`, sorted, as found inputs.
+std::vector<Input> WalkDirectory(const std::string& prefix) {
+  std::vector<std::string> files;
+  std::vector<std::string> pending{prefix};
+  while (!pending.empty()) {
+    const std::string dir = std::move(pending.back());
+    pending.pop_back();
+    ListDirectory(dir, &files, &pending);
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Input> found;
+  found.reserve(files.size());
+  for (std::string& path : files) {
+    std::string display = path;
+    found.push_back({std::move(path), std::move(display), {}, true, {}});
+  }
+  return found;
 }
 
 }  // namespace
@@ -111,10 +151,12 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t thr
   BatchStart();
   // Each argument is classified first, on the -j threads: for a long list of names that is
   // a system call or more per name, on one thread the largest serial part of a big batch.
+  // A directory's own entries are listed there too, and its subdirectories walked after,
+  // also on the -j threads, each sorted where it was walked.
   std::vector<Input> named(args.size());
   std::vector<char> directory(args.size(), 0);
-  std::vector<std::vector<std::string>> found(args.size());
-  std::vector<std::vector<std::filesystem::path>> subdirectories(args.size());
+  std::vector<std::vector<std::string>> files(args.size());
+  std::vector<std::vector<std::string>> subdirectories(args.size());
   ParallelFor(args.size(), threads, [&](size_t i) {
     const std::string& arg = args[i];
     Input& input = named[i];
@@ -135,31 +177,52 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t thr
       return;
     }
     directory[i] = 1;
-    ListDirectory(arg, &found[i], &subdirectories[i]);
+    // Found paths are printed as std::filesystem's generic form of `arg / name` (repeated
+    // slashes made one).
+    std::string prefix = (std::filesystem::path(arg) / "x").generic_string();
+    prefix.pop_back();
+    ListDirectory(prefix, &files[i], &subdirectories[i]);
+    std::sort(files[i].begin(), files[i].end());
   });
-  // The subdirectories of the directories named are walked in parallel too.
-  std::vector<std::pair<size_t, const std::filesystem::path*>> walks;
+  std::vector<std::pair<size_t, const std::string*>> walks;
   for (size_t i = 0; i < args.size(); ++i) {
-    for (const std::filesystem::path& sub : subdirectories[i]) walks.emplace_back(i, &sub);
+    for (const std::string& sub : subdirectories[i]) walks.emplace_back(i, &sub);
   }
-  std::vector<std::vector<std::string>> walked(walks.size());
+  std::vector<std::vector<Input>> walked(walks.size());
   ParallelFor(walks.size(), threads,
-              [&](size_t w) { WalkDirectory(*walks[w].second, &walked[w]); });
-  for (size_t w = 0; w < walks.size(); ++w) {
-    std::vector<std::string>& into = found[walks[w].first];
-    into.insert(into.end(), std::make_move_iterator(walked[w].begin()),
-                std::make_move_iterator(walked[w].end()));
-  }
+              [&](size_t w) { walked[w] = WalkDirectory(*walks[w].second); });
 
   std::vector<Input> inputs;
   inputs.reserve(args.size());
+  size_t w = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     if (!directory[i]) {
       inputs.push_back(std::move(named[i]));
       continue;
     }
-    std::sort(found[i].begin(), found[i].end());
-    if (found[i].empty()) {
+    // Each subdirectory's files are sorted and follow one another in the sorted whole (they
+    // alone start with its path), so the pieces are placed by their first path.
+    std::vector<std::vector<Input>*> pieces;
+    for (; w < walks.size() && walks[w].first == i; ++w) {
+      if (!walked[w].empty()) pieces.push_back(&walked[w]);
+    }
+    std::sort(pieces.begin(), pieces.end(),
+              [](const std::vector<Input>* a, const std::vector<Input>* b) {
+                return a->front().path < b->front().path;
+              });
+    const size_t before = inputs.size();
+    size_t f = 0;
+    auto add_files_before = [&](const std::string* bound) {
+      for (; f < files[i].size() && (bound == nullptr || files[i][f] < *bound); ++f) {
+        inputs.push_back({files[i][f], std::move(files[i][f]), {}, true, {}});
+      }
+    };
+    for (std::vector<Input>* piece : pieces) {
+      add_files_before(&piece->front().path);
+      for (Input& input : *piece) inputs.push_back(std::move(input));
+    }
+    add_files_before(nullptr);
+    if (inputs.size() == before) {
       inputs.push_back({args[i],
                         args[i],
                         "no program files (.vp .fp .arbvp .arbfp, .txt with an ARB header) under "
@@ -167,7 +230,6 @@ std::vector<Input> ExpandInputs(const std::vector<std::string>& args, size_t thr
                         false,
                         {}});
     }
-    for (std::string& path : found[i]) inputs.push_back({path, path, {}, true, {}});
   }
   return inputs;
 }
