@@ -1,7 +1,11 @@
 // Printing diagnostics in the chosen format.
 #include <fmt/format.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -28,10 +32,30 @@ compiler::TextOptions TextOptionsFor(const CommonOptions& options) {
 }
 
 void PrintText(const std::vector<std::string>& rendered) {
-  // One write: stderr is unbuffered, and a write per file costs more than rendering it.
-  std::string out;
-  for (const std::string& text : rendered) out += text;
-  std::fwrite(out.data(), 1, out.size(), stderr);
+  // Gathered writes: stderr is unbuffered, a write per file costs more than rendering it,
+  // and joining a big batch's text first cost a fresh buffer as large as all of it.
+  std::fflush(stderr);
+  std::vector<iovec> parts;
+  parts.reserve(rendered.size());
+  for (const std::string& text : rendered) {
+    if (!text.empty()) parts.push_back({const_cast<char*>(text.data()), text.size()});
+  }
+  size_t next = 0;
+  while (next < parts.size()) {
+    const int count = static_cast<int>(std::min<size_t>(parts.size() - next, IOV_MAX));
+    ssize_t written = writev(STDERR_FILENO, &parts[next], count);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      break;  // stderr closed or full: as fwrite, nothing more to do
+    }
+    for (; next < parts.size() && static_cast<size_t>(written) >= parts[next].iov_len; ++next) {
+      written -= static_cast<ssize_t>(parts[next].iov_len);
+    }
+    if (written > 0) {
+      parts[next].iov_base = static_cast<char*>(parts[next].iov_base) + written;
+      parts[next].iov_len -= static_cast<size_t>(written);
+    }
+  }
   std::fflush(stdout);
 }
 
