@@ -25,6 +25,6 @@ hyperfine -N -i --warmup 3 --runs "${RUNS:-20}" --export-markdown "${EXPORT:-/de
   -n "/bin/true" "/bin/true"
 for args in "${files[*]}" "$one"; do
   # shellcheck disable=SC2086 # the file list is split on purpose
-  /usr/bin/time -q -o /dev/fd/3 -f "arbiter check, $(wc -w <<< "$args") file(s): peak %M KB" \
+  /usr/bin/time -q -a -o /dev/fd/3 -f "arbiter check, $(wc -w <<< "$args") file(s): peak %M KB" \
     "$arbiter" check $args 3>&1 > /dev/null 2>&1 || true
 done

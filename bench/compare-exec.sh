@@ -27,6 +27,6 @@ hyperfine -N -i --warmup 1 --runs "${RUNS:-3}" --export-markdown "${EXPORT:-/dev
   "${commands[@]}"
 for cmd in "verify $verify" "run $tests"; do
   # shellcheck disable=SC2086 # the command is split on purpose
-  /usr/bin/time -q -o /dev/fd/3 -f "arbiter $cmd (softpipe, -j 2): peak %M KB (largest process)" \
+  /usr/bin/time -q -a -o /dev/fd/3 -f "arbiter $cmd (softpipe, -j 2): peak %M KB (largest process)" \
     "$arbiter" $cmd -j 2 3>&1 > /dev/null 2>&1 || true
 done
