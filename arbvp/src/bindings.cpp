@@ -1,7 +1,10 @@
 // Canonical spellings of bindings, as the specs write them.
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
+#include <iterator>
+#include <string_view>
 
 #include "arbiter/arbvp/ir.h"
 #include "binding_key.h"
@@ -11,100 +14,122 @@ namespace {
 
 std::string_view FaceName(Face face) { return face == Face::Back ? "back" : "front"; }
 
-std::string StateName(const Binding& b) {
-  switch (b.state) {
-    case StateItem::MaterialAmbient:
-      return fmt::format("state.material.{}.ambient", FaceName(b.face));
-    case StateItem::MaterialDiffuse:
-      return fmt::format("state.material.{}.diffuse", FaceName(b.face));
-    case StateItem::MaterialSpecular:
-      return fmt::format("state.material.{}.specular", FaceName(b.face));
-    case StateItem::MaterialEmission:
-      return fmt::format("state.material.{}.emission", FaceName(b.face));
-    case StateItem::MaterialShininess:
-      return fmt::format("state.material.{}.shininess", FaceName(b.face));
-    case StateItem::LightAmbient:
-      return fmt::format("state.light[{}].ambient", b.index);
-    case StateItem::LightDiffuse:
-      return fmt::format("state.light[{}].diffuse", b.index);
-    case StateItem::LightSpecular:
-      return fmt::format("state.light[{}].specular", b.index);
-    case StateItem::LightPosition:
-      return fmt::format("state.light[{}].position", b.index);
-    case StateItem::LightAttenuation:
-      return fmt::format("state.light[{}].attenuation", b.index);
-    case StateItem::LightSpotDirection:
-      return fmt::format("state.light[{}].spot.direction", b.index);
-    case StateItem::LightHalf:
-      return fmt::format("state.light[{}].half", b.index);
-    case StateItem::LightModelAmbient:
-      return "state.lightmodel.ambient";
-    case StateItem::LightModelSceneColor:
-      return fmt::format("state.lightmodel.{}.scenecolor", FaceName(b.face));
-    case StateItem::LightProdAmbient:
-      return fmt::format("state.lightprod[{}].{}.ambient", b.index, FaceName(b.face));
-    case StateItem::LightProdDiffuse:
-      return fmt::format("state.lightprod[{}].{}.diffuse", b.index, FaceName(b.face));
-    case StateItem::LightProdSpecular:
-      return fmt::format("state.lightprod[{}].{}.specular", b.index, FaceName(b.face));
-    case StateItem::TexGenEye:
-    case StateItem::TexGenObject:
-      return fmt::format("state.texgen[{}].{}.{}", b.index,
-                         b.state == StateItem::TexGenEye ? "eye" : "object", "strq"[b.coord]);
-    case StateItem::FogColor:
-      return "state.fog.color";
-    case StateItem::FogParams:
-      return "state.fog.params";
-    case StateItem::ClipPlane:
-      return fmt::format("state.clip[{}].plane", b.index);
-    case StateItem::PointSize:
-      return "state.point.size";
-    case StateItem::PointAttenuation:
-      return "state.point.attenuation";
-    case StateItem::TexEnvColor:
-      return fmt::format("state.texenv[{}].color", b.index);
-    case StateItem::DepthRange:
-      return "state.depth.range";
-    case StateItem::MatrixRow: {
-      std::string name;
-      switch (b.matrix) {
-        case MatrixName::Modelview:
-          name = fmt::format("modelview[{}]", b.index);
-          break;
-        case MatrixName::Projection:
-          name = "projection";
-          break;
-        case MatrixName::Mvp:
-          name = "mvp";
-          break;
-        case MatrixName::Texture:
-          name = fmt::format("texture[{}]", b.index);
-          break;
-        case MatrixName::Palette:
-          name = fmt::format("palette[{}]", b.index);
-          break;
-        case MatrixName::Program:
-          name = fmt::format("program[{}]", b.index);
-          break;
+// How each state binding is spelled, in StateItem order, as the specs write them: {f} is
+// the face, {i} the index, {c} the texgen coordinate, {m} the matrix (kMatrixSpellings) and
+// its modifier, {r} the row. StateName writes these; KeyOf keys exactly the fields a
+// spelling shows (kStateFields), so equal names give equal keys.
+constexpr std::string_view kStateSpellings[] = {
+    "state.material.{f}.ambient",
+    "state.material.{f}.diffuse",
+    "state.material.{f}.specular",
+    "state.material.{f}.emission",
+    "state.material.{f}.shininess",
+    "state.light[{i}].ambient",
+    "state.light[{i}].diffuse",
+    "state.light[{i}].specular",
+    "state.light[{i}].position",
+    "state.light[{i}].attenuation",
+    "state.light[{i}].spot.direction",
+    "state.light[{i}].half",
+    "state.lightmodel.ambient",
+    "state.lightmodel.{f}.scenecolor",
+    "state.lightprod[{i}].{f}.ambient",
+    "state.lightprod[{i}].{f}.diffuse",
+    "state.lightprod[{i}].{f}.specular",
+    "state.texgen[{i}].eye.{c}",
+    "state.texgen[{i}].object.{c}",
+    "state.fog.color",
+    "state.fog.params",
+    "state.clip[{i}].plane",
+    "state.point.size",
+    "state.point.attenuation",
+    "state.texenv[{i}].color",
+    "state.depth.range",
+    "state.matrix.{m}.row[{r}]",
+};
+static_assert(std::size(kStateSpellings) == static_cast<size_t>(StateItem::MatrixRow) + 1);
+
+// In MatrixName order; then MatrixModifier's suffixes.
+constexpr std::string_view kMatrixSpellings[] = {"modelview[{i}]", "projection",   "mvp",
+                                                 "texture[{i}]",   "palette[{i}]", "program[{i}]"};
+static_assert(std::size(kMatrixSpellings) == static_cast<size_t>(MatrixName::Program) + 1);
+constexpr std::string_view kModifierSpellings[] = {"", ".inverse", ".transpose", ".invtrans"};
+static_assert(std::size(kModifierSpellings) == static_cast<size_t>(MatrixModifier::InvTrans) + 1);
+
+// The selector fields a state binding's spelling shows.
+struct StateFields {
+  bool face = false;
+  bool index = false;  // for a matrix row: where the matrix is numbered
+  bool coord = false;
+  bool matrix = false;  // matrix, modifier and row
+};
+
+constexpr bool Shows(std::string_view spelling, std::string_view field) {
+  return spelling.find(field) != std::string_view::npos;
+}
+
+constexpr auto kStateFields = [] {
+  std::array<StateFields, std::size(kStateSpellings)> fields{};
+  for (size_t i = 0; i < fields.size(); ++i) {
+    fields[i] = {Shows(kStateSpellings[i], "{f}"), Shows(kStateSpellings[i], "{i}"),
+                 Shows(kStateSpellings[i], "{c}"), Shows(kStateSpellings[i], "{m}")};
+  }
+  return fields;
+}();
+constexpr auto kMatrixNumbered = [] {
+  std::array<bool, std::size(kMatrixSpellings)> numbered{};
+  for (size_t i = 0; i < numbered.size(); ++i) numbered[i] = Shows(kMatrixSpellings[i], "{i}");
+  return numbered;
+}();
+
+StateFields StateNameFields(const Binding& b) {
+  const size_t item = static_cast<size_t>(b.state);
+  if (item >= kStateFields.size()) return {true, true, true, true};
+  StateFields fields = kStateFields[item];
+  if (fields.matrix) {
+    const size_t matrix = static_cast<size_t>(b.matrix);
+    fields.index = matrix >= kMatrixNumbered.size() || kMatrixNumbered[matrix];
+  }
+  return fields;
+}
+
+// Appends `spelling` with b's fields in place of its {x}.
+void Spell(std::string_view spelling, const Binding& b, std::string* out) {
+  for (size_t brace; (brace = spelling.find('{')) != std::string_view::npos;) {
+    out->append(spelling.substr(0, brace));
+    const char field = spelling[brace + 1];
+    spelling.remove_prefix(brace + 3);  // past "{x}"
+    switch (field) {
+      case 'f':
+        out->append(FaceName(b.face));
+        break;
+      case 'i':
+        fmt::format_to(std::back_inserter(*out), "{}", b.index);
+        break;
+      case 'c':
+        out->push_back("strq"[b.coord & 3]);
+        break;
+      case 'm': {
+        const auto matrix = static_cast<size_t>(b.matrix);
+        const auto modifier = static_cast<size_t>(b.modifier);
+        Spell(matrix < std::size(kMatrixSpellings) ? kMatrixSpellings[matrix] : "?", b, out);
+        if (modifier < std::size(kModifierSpellings)) out->append(kModifierSpellings[modifier]);
+        break;
       }
-      std::string_view modifier;
-      switch (b.modifier) {
-        case MatrixModifier::None:
-          break;
-        case MatrixModifier::Inverse:
-          modifier = ".inverse";
-          break;
-        case MatrixModifier::Transpose:
-          modifier = ".transpose";
-          break;
-        case MatrixModifier::InvTrans:
-          modifier = ".invtrans";
-          break;
-      }
-      return fmt::format("state.matrix.{}{}.row[{}]", name, modifier, b.row);
+      case 'r':
+        fmt::format_to(std::back_inserter(*out), "{}", b.row);
+        break;
     }
   }
-  return "state.?";
+  out->append(spelling);
+}
+
+std::string StateName(const Binding& b) {
+  const size_t item = static_cast<size_t>(b.state);
+  if (item >= std::size(kStateSpellings)) return "state.?";
+  std::string name;
+  Spell(kStateSpellings[item], b, &name);
+  return name;
 }
 
 }  // namespace
@@ -181,56 +206,6 @@ std::string BindingName(const Binding& b, ProgramKind kind) {
 
 namespace {
 
-// The selector fields a state binding's name spells (StateName): face, index, coordinate,
-// matrix, modifier, row.
-struct StateFields {
-  bool face = false;
-  bool index = false;
-  bool coord = false;
-  bool matrix = false;
-};
-
-StateFields StateNameFields(const Binding& b) {
-  switch (b.state) {
-    case StateItem::MaterialAmbient:
-    case StateItem::MaterialDiffuse:
-    case StateItem::MaterialSpecular:
-    case StateItem::MaterialEmission:
-    case StateItem::MaterialShininess:
-    case StateItem::LightModelSceneColor:
-      return {.face = true};
-    case StateItem::LightAmbient:
-    case StateItem::LightDiffuse:
-    case StateItem::LightSpecular:
-    case StateItem::LightPosition:
-    case StateItem::LightAttenuation:
-    case StateItem::LightSpotDirection:
-    case StateItem::LightHalf:
-    case StateItem::ClipPlane:
-    case StateItem::TexEnvColor:
-      return {.index = true};
-    case StateItem::LightProdAmbient:
-    case StateItem::LightProdDiffuse:
-    case StateItem::LightProdSpecular:
-      return {.face = true, .index = true};
-    case StateItem::TexGenEye:
-    case StateItem::TexGenObject:
-      return {.index = true, .coord = true};
-    case StateItem::MatrixRow: {
-      bool numbered = b.matrix != MatrixName::Projection && b.matrix != MatrixName::Mvp;
-      return {.index = numbered, .matrix = true};
-    }
-    case StateItem::LightModelAmbient:
-    case StateItem::FogColor:
-    case StateItem::FogParams:
-    case StateItem::PointSize:
-    case StateItem::PointAttenuation:
-    case StateItem::DepthRange:
-      return {};
-  }
-  return {.face = true, .index = true, .coord = true, .matrix = true};
-}
-
 // Whether BindingName spells the index of a non-state binding.
 bool NameHasIndex(const Binding& b) {
   switch (b.kind) {
@@ -258,10 +233,11 @@ uint32_t FloatBits(float v, bool signed_zero) {
 
 }  // namespace
 
-// Mirrors BindingName (and StateName): a field goes into the key only where the name spells
-// it, so equal names give equal keys; and the name spells every field of the key
-// distinctly, so different keys give different names. Keep the three in step
-// (tests/arbvp/front_end_test.cpp checks them against each other).
+// Mirrors BindingName (and StateName's spellings): a field goes into the key only where the
+// name spells it, so equal names give equal keys; and the name spells every field of the key
+// distinctly, so different keys give different names. State fields come from the spellings
+// themselves; keep NameHasIndex in step with BindingName for the others
+// (tests/arbvp/front_end_test.cpp checks names and keys against each other).
 BindingKey KeyOf(const Binding& b, bool signed_zero) {
   BindingKey key;
   auto& w = key.words;
