@@ -21,8 +21,8 @@ namespace {
 
 // A thread costs its start (0.2 to 0.3 ms of a 3 ms check of ten ARB programs), so a batch
 // runs on the calling thread until it has lasted this long, and then on -j threads: from
-// there a second thread pays (the 563 ARB programs of the corpus check 1.13x faster than
-// with a 20 ms window; docs/performance.md).
+// there a second thread pays (the 563 ARB programs of the corpus check 1.11x faster than
+// with a 20 ms window; docs/performance.md, ARB).
 constexpr auto kAlone = std::chrono::milliseconds(2);
 
 // Named files are read while the arguments are classified, for this long: one open tells a
