@@ -56,7 +56,29 @@ struct CommonOptions {
   bool driver_check = false;
   std::string driver = "softpipe";
   std::vector<std::string> files;
+  // GLSL: --link (the inputs are one program), -D, -U, -I, --preamble, and the warning
+  // switches -W<code>, -Wno-<code>, -Werror=<code> (main.cpp passes them as --warning).
+  bool link = false;
+  std::vector<std::string> defines;
+  std::vector<std::string> undefines;
+  std::vector<std::string> include_dirs;
+  std::string preamble;
+  std::vector<std::string> warnings;
 };
+
+// What the GLSL options of CommonOptions resolve to: the preamble file read, the warning
+// switches checked against the known codes.
+struct GlslSetup {
+  std::optional<compiler::LimitProfile> profile;
+  std::unique_ptr<compiler::SourceFile> preamble;
+  glsl::CheckOptions check;
+  compiler::WarningPolicy warnings;
+};
+// Resolves --limits, the preprocessor options and the warning switches; on error prints it
+// and returns the exit code (Usage, or Environment for an unreadable --preamble).
+std::optional<Exit> ResolveGlslSetup(const CommonOptions& options, GlslSetup* out);
+// Adds -D, -U, -I, --preamble and --warning to a command that checks GLSL.
+void AddGlslOptions(CLI::App* app, CommonOptions* options);
 
 // glibc's malloc gives memory back to the kernel and grows a thread's heap a few pages at a
 // time; with two threads each such change also flushes the other core's TLB (an
@@ -81,6 +103,12 @@ bool ResolveLimits(const CommonOptions& options, std::optional<compiler::LimitPr
 bool ResolveStage(const CommonOptions& options, std::optional<arbvp::ProgramKind>* out);
 // The GLSL stage of an input: --stage vert/frag, else its extension; nullopt for ARB.
 std::optional<glsl::Stage> GlslStage(const CommonOptions& options, const Input& input);
+
+// Moves each diagnostic of `sink` to the report of the file it is in (reports[i] is keep[i]'s;
+// a diagnostic of no file goes to the first); the first report gets the dropped count.
+void DistributeDiagnostics(compiler::DiagnosticSink* sink,
+                           const std::vector<std::unique_ptr<compiler::SourceFile>>& keep,
+                           std::vector<compiler::FileReport>* reports);
 
 // Prints the reports in the chosen format (text to stderr, json/sarif to stdout).
 void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options);

@@ -79,15 +79,7 @@ int RunLink(const LinkCommandOptions& options) {
     glsl::LinkProgram(vert_sources, frag_sources, link_options, &sink);
     if (common.werror) sink.PromoteWarnings();
     if (sink.error_count() + sink.dropped() > 0) exit = Exit::Rejected;
-    // Each diagnostic goes to the report of its file (all files were read: one per report).
-    for (compiler::Diagnostic& d : sink.diagnostics()) {
-      size_t index = 0;
-      for (size_t i = 0; i < keep.size(); ++i) {
-        if (keep[i].get() == d.file) index = i;
-      }
-      reports[index].diagnostics.push_back(std::move(d));
-    }
-    reports.front().dropped_errors = sink.dropped();
+    DistributeDiagnostics(&sink, keep, &reports);
   }
   PrintReports(reports, common);
   return static_cast<int>(exit);

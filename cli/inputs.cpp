@@ -42,7 +42,8 @@ const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
 
 // Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
-// ARB header (formats.md), and GLSL .vert .vs .frag .fs.
+// ARB header (formats.md), and GLSL files (glsl::IsGlslPath: .vert .vs .vsh .frag .fs .fsh
+// .glsl).
 bool IsProgramFile(const std::string& path) {
   const std::string_view name = path;
   const size_t dot = name.rfind('.');
@@ -53,7 +54,7 @@ bool IsProgramFile(const std::string& path) {
   }
   const std::string_view ext = name.substr(dot);
   if (ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp") return true;
-  if (ext == ".vert" || ext == ".vs" || ext == ".frag" || ext == ".fs") return true;
+  if (glsl::IsGlslPath(name)) return true;
   if (ext != ".txt") return false;
   char head[5] = {};
   std::ifstream in(path, std::ios::binary);

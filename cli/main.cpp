@@ -30,9 +30,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CommonOptions check_options;
-  CLI::App* check =
-      app.add_subcommand("check", "validate ARB vertex/fragment programs and GLSL 1.10 shaders");
+  CLI::App* check = app.add_subcommand(
+      "check", "validate ARB vertex/fragment programs and GLSL 1.10/1.20 shaders");
   arbiter::cli::AddCommonOptions(check, &check_options, /*diagnostics=*/true);
+  check->add_flag("--link", check_options.link,
+                  "GLSL: judge the files as one program (glLinkProgram), not each as a shader "
+                  "object (glCompileShader)");
+  arbiter::cli::AddGlslOptions(check, &check_options);
   arbiter::cli::AddDriverCheckOptions(check, &check_options);
 
   CommonOptions info_options;
@@ -48,10 +52,18 @@ int main(int argc, char** argv) {
 
   try {
     // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
-    // "-error", so it is passed on as --Werror.
+    // "-error", so it is passed on as --Werror; -W<code>, -Wno-<code> and -Werror=<code>
+    // likewise as --warning=<code>, --warning=no-<code>, --warning=error=<code>.
     std::vector<std::string> args;
     for (int i = argc - 1; i >= 1; --i) {
-      args.emplace_back(std::string_view(argv[i]) == "-Werror" ? "--Werror" : argv[i]);
+      std::string_view arg = argv[i];
+      if (arg == "-Werror") {
+        args.emplace_back("--Werror");
+      } else if (arg.size() > 2 && arg.substr(0, 2) == "-W") {
+        args.emplace_back("--warning=" + std::string(arg.substr(2)));
+      } else {
+        args.emplace_back(arg);
+      }
     }
     app.parse(std::move(args));
   } catch (const CLI::ParseError& e) {

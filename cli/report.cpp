@@ -77,4 +77,17 @@ void PrintReports(const std::vector<compiler::FileReport>& reports, const Common
   std::fflush(stdout);
 }
 
+void DistributeDiagnostics(compiler::DiagnosticSink* sink,
+                           const std::vector<std::unique_ptr<compiler::SourceFile>>& keep,
+                           std::vector<compiler::FileReport>* reports) {
+  for (compiler::Diagnostic& d : sink->diagnostics()) {
+    size_t index = 0;
+    for (size_t i = 0; i < keep.size(); ++i) {
+      if (keep[i].get() == d.file) index = i;
+    }
+    (*reports)[index].diagnostics.push_back(std::move(d));
+  }
+  reports->front().dropped_errors = sink->dropped();
+}
+
 }  // namespace arbiter::cli

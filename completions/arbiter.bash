@@ -41,11 +41,12 @@ _arbiter() {
   fi
 
   local arb='vp|fp|arbvp|arbfp|txt'
-  local glsl='vert|vs|frag|fs'
+  local glsl='vert|vs|vsh|frag|fs|fsh|glsl'
   local options files formats="text json" stages="arbvp arbfp"
   case "$command" in
     check)
       options="-h --help --format --color --limits --stage --error-limit -W --Werror -j --jobs
+               --link -D --define -U --undefine -I --include-dir --preamble --warning
                --driver-check --driver"
       files="$arb|$glsl" formats="text json sarif" stages="arbvp arbfp vert frag" ;;
     info)

@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (glsl::Stage stage : {glsl::Stage::Vertex, glsl::Stage::Fragment}) {
     compiler::DiagnosticSink sink;
     glsl::CheckOptions options;
-    options.link_as_program = stage == glsl::Stage::Vertex;
+    options.link = stage == glsl::Stage::Vertex;
     glsl::CheckResult result = glsl::CheckShader(stage, {source.get()}, options, &sink);
     if (result.ok != (sink.error_count() == 0)) __builtin_trap();
     for (const compiler::Diagnostic& d : sink.diagnostics()) {

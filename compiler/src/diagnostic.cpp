@@ -35,13 +35,25 @@ Diagnostic* DiagnosticSink::Report(const DiagnosticInfo& info, Severity severity
 }
 
 void DiagnosticSink::PromoteWarnings() {
-  // Replay the stored diagnostics in order with warnings as errors, applying the limit.
+  WarningPolicy all;
+  all.werror = true;
+  ApplyWarningPolicy(all);
+}
+
+void DiagnosticSink::ApplyWarningPolicy(const WarningPolicy& policy) {
+  if (!policy.werror && policy.codes.empty()) return;
+  // Replay the stored diagnostics in order with the policy's severities, applying the limit.
   std::vector<Diagnostic> kept;
   kept.reserve(diags_.size());
   int errors = 0;
+  int warnings = 0;
   for (Diagnostic& diag : diags_) {
     if (diag.severity == Severity::Warning) {
-      diag.severity = Severity::Error;
+      const auto it =
+          diag.info != nullptr ? policy.codes.find(diag.info->code) : policy.codes.end();
+      const WarningAction action = it != policy.codes.end() ? it->second : WarningAction::Default;
+      if (action == WarningAction::Off) continue;
+      if (action == WarningAction::Error || policy.werror) diag.severity = Severity::Error;
     }
     if (error_limit_ > 0 && errors >= error_limit_) {
       if (diag.severity == Severity::Error) {
@@ -51,14 +63,18 @@ void DiagnosticSink::PromoteWarnings() {
     }
     if (diag.severity == Severity::Error) {
       ++errors;
+    } else if (diag.severity == Severity::Warning) {
+      ++warnings;
     }
     kept.push_back(std::move(diag));
   }
   diags_ = std::move(kept);
   errors_ = errors;
-  warnings_ = 0;
-  dropped_ += dropped_warnings_;
-  dropped_warnings_ = 0;
+  warnings_ = warnings;
+  if (policy.werror) {
+    dropped_ += dropped_warnings_;
+    dropped_warnings_ = 0;
+  }
 }
 
 std::string_view SeverityName(Severity severity) {

@@ -23,6 +23,7 @@ constexpr std::string_view kMesa = "mesa";
 LimitProfile MakeProfile(std::string_view name, bool mesa) {
   LimitProfile profile;
   profile.name = std::string(name);
+  profile.base = std::string(name);
 #define ARBITER_LIMIT(key, gl, specmin, mesa_value, desc) \
   profile.values.emplace(key, mesa ? (mesa_value) : (specmin));
 #include "limits.def"
@@ -84,9 +85,11 @@ std::optional<LimitProfile> ProfileFromJson(const std::string& path, const nlohm
     return std::nullopt;
   }
   for (const auto& member : document.items()) {
-    if (member.key() != "name" && member.key() != "base" && member.key() != "limits") {
-      *error = fmt::format("unknown member '{}' in '{}' (expected 'name', 'base' and 'limits')",
-                           member.key(), path);
+    if (member.key() != "name" && member.key() != "base" && member.key() != "limits" &&
+        member.key() != "extensions") {
+      *error = fmt::format(
+          "unknown member '{}' in '{}' (expected 'name', 'base', 'limits' and 'extensions')",
+          member.key(), path);
       return std::nullopt;
     }
   }
@@ -113,6 +116,16 @@ std::optional<LimitProfile> ProfileFromJson(const std::string& path, const nlohm
       return std::nullopt;
     }
     profile.name = it->get<std::string>();
+  }
+
+  if (const auto it = document.find("extensions"); it != document.end()) {
+    bool strings = it->is_array() &&
+                   std::all_of(it->begin(), it->end(), [](const auto& e) { return e.is_string(); });
+    if (!strings) {
+      *error = fmt::format("'extensions' in '{}' must be an array of extension names", path);
+      return std::nullopt;
+    }
+    profile.glsl_extensions = it->get<std::vector<std::string>>();
   }
 
   if (const auto it = document.find("limits"); it != document.end()) {

@@ -1,112 +1,114 @@
-// CheckShader: glslang compile and link of one GLSL 1.10 shader, its info log turned into
-// arbiter diagnostics, then arbiter's own 1.10 rules.
+// CheckShader: glslang compile (and link) of one GLSL 1.10 or 1.20 shader, its info log turned
+// into arbiter diagnostics, then arbiter's own rules of that version.
 #include "arbiter/glsl/check.h"
 
-#include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
-#include <mutex>
+#include <algorithm>
 #include <string>
 
-#include "charset.h"
 #include "diag.h"
 #include "info_log.h"
-#include "source_text.h"
+#include "prepare.h"
+#include "scan.h"
 #include "strict/strict.h"
-#include "version_gate.h"
 
 namespace arbiter::glsl {
 namespace {
 
-std::once_flag g_glslang_initialised;
-
-void EnsureGlslang() {
-  std::call_once(g_glslang_initialised, [] { glslang::InitializeProcess(); });
-}
-
-EShLanguage Language(Stage stage) {
-  return stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
-}
-
-// Every error, not only the first (platform.md: EShMsgCascadingErrors).
+// Every error, not only the first (EShMsgCascadingErrors).
 constexpr auto kMessages = static_cast<EShMessages>(EShMsgCascadingErrors);
+
+bool EndsWith(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+// File name endings and their stages; the longest match wins (".vert.glsl" before ".glsl").
+struct StageSuffix {
+  std::string_view suffix;
+  std::optional<Stage> stage;
+};
+constexpr StageSuffix kSuffixes[] = {
+    {".vert.glsl", Stage::Vertex}, {".frag.glsl", Stage::Fragment}, {".vert", Stage::Vertex},
+    {".vs", Stage::Vertex},        {".vsh", Stage::Vertex},         {".frag", Stage::Fragment},
+    {".fs", Stage::Fragment},      {".fsh", Stage::Fragment},       {".glsl", std::nullopt},
+};
+
+const StageSuffix* SuffixOf(std::string_view path) {
+  for (const StageSuffix& s : kSuffixes) {
+    if (EndsWith(path, s.suffix)) return &s;
+  }
+  return nullptr;
+}
+
+int Errors(const compiler::DiagnosticSink& sink) { return sink.error_count() + sink.dropped(); }
 
 }  // namespace
 
 std::optional<Stage> StageFromPath(std::string_view path) {
-  auto dot = path.rfind('.');
-  if (dot == std::string_view::npos) return std::nullopt;
-  std::string_view ext = path.substr(dot);
-  if (ext == ".vert" || ext == ".vs") return Stage::Vertex;
-  if (ext == ".frag" || ext == ".fs") return Stage::Fragment;
-  return std::nullopt;
+  const StageSuffix* s = SuffixOf(path);
+  return s != nullptr ? s->stage : std::nullopt;
 }
+
+bool IsGlslPath(std::string_view path) { return SuffixOf(path) != nullptr; }
 
 CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFile*>& sources,
                         const CheckOptions& options, compiler::DiagnosticSink* sink) {
   EnsureGlslang();
   CheckResult result;
-  int errors_before = sink->error_count() + sink->dropped();
+  const int errors_before = Errors(*sink);
   if (sources.empty()) return result;
 
-  // The text glslang parses keeps every line and column of the user's (source_text.h).
-  std::vector<std::string> texts;
-  for (const compiler::SourceFile* file : sources) {
-    std::string blanked = ReportInvalidCharacters(*file, sink);
-    // #version belongs to the first string (3.3: before anything else).
-    std::string gated;
-    if (texts.empty() &&
-        GateVersion(*file, blanked.empty() ? file->text() : blanked, &gated, sink)) {
-      blanked = std::move(gated);
-    }
-    texts.push_back(PrepareForGlslang(blanked.empty() ? file->text() : blanked));
-  }
-  std::vector<const char*> strings;
-  std::vector<int> lengths;
-  for (const std::string& text : texts) {
-    strings.push_back(text.data());
-    lengths.push_back(static_cast<int>(text.size()));
-  }
-  glslang::TShader shader(Language(stage));
-  // No names: glslang would then expand __FILE__ to a file name, where GLSL 1.10 (3.3) says
-  // it is the source string number. Messages say "<string>:<line>:".
-  shader.setStringsWithLengths(strings.data(), lengths.data(), static_cast<int>(strings.size()));
-  // A shader without #version is 1.10 desktop (the default version matters: without it
-  // glslang takes such a shader as ES 1.00).
-  bool compiled = shader.parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);
-  int relaxed = ReportInfoLog(shader.getInfoLog(), sources, stage, /*link=*/false, sink);
-  // Only errors that GLSL 1.10 does not make (see info_log.cpp): glslang recovered from each
-  // of them, so its AST is the shader's and the link step and the strictness layer run.
-  bool usable = compiled || (relaxed > 0 && sink->error_count() + sink->dropped() == errors_before);
+  PreparedShader prepared = PrepareShader(stage, sources, options, sink);
+  if (!prepared.checked) return result;
+  bool compiled = false;
+  std::unique_ptr<glslang::TShader> shader = ParsePrepared(stage, prepared, &compiled);
+  InfoLogContext log{prepared.files, stage, prepared.version, options.link, &prepared};
+  int relaxed = ReportInfoLog(shader->getInfoLog(), log, /*link=*/false, sink);
+  // Only errors that the shader's version does not make (see info_log.cpp): glslang recovered
+  // from each of them, so its AST is the shader's and the link step and the strictness layer
+  // run.
+  bool usable = compiled || (relaxed > 0 && Errors(*sink) == errors_before);
 
   // The strictness layer reads the whole AST: glslang's link drops uncalled functions.
   FragmentOutputWrites fragment_writes;
   StrictContext ctx{stage,
-                    sources,
+                    prepared.version,
+                    prepared.files,
                     sink,
-                    *shader.getIntermediate(),
+                    *shader->getIntermediate(),
                     options.link,
                     /*linked=*/false,
-                    options.link_as_program,
-                    &fragment_writes};
+                    &fragment_writes,
+                    prepared.preamble};
   if (usable) RunStrictChecks(ctx);
+  // Chapter 9: "translation_unit: external_declaration | translation_unit
+  // external_declaration"; glslang takes a shader without any.
+  if (usable && std::all_of(prepared.texts.begin(), prepared.texts.end(),
+                            [](const std::string& t) { return Tokenize(t).empty(); })) {
+    sink->Report(Info(Diag::SyntaxError), sources.front(), {0, 0},
+                 "the shader has no declaration: a shader is one or more declarations and "
+                 "function definitions (chapter 9 grammar: translation_unit)");
+  }
 
+  // The link step runs for a shader object too: it finds recursion, which drivers reject at
+  // compile time (glslang only when linking); what only a program needs (main(), the bodies
+  // of called functions) is dropped from its messages when compiling (info_log.cpp).
   glslang::TProgram program;
-  if (usable && options.link) {
-    program.addShader(&shader);
-    int errors_before_link = sink->error_count() + sink->dropped();
+  if (usable) {
+    program.addShader(shader.get());
+    int errors_before_link = Errors(*sink);
     bool linked = program.link(kMessages);
-    int relaxed_link = ReportInfoLog(program.getInfoLog(), sources, stage, /*link=*/true, sink);
-    ctx.linked =
-        linked || (relaxed_link > 0 && sink->error_count() + sink->dropped() == errors_before_link);
+    int relaxed_link = ReportInfoLog(program.getInfoLog(), log, /*link=*/true, sink);
+    ctx.linked = linked || (relaxed_link > 0 && Errors(*sink) == errors_before_link);
     RunLinkStrictChecks(ctx);
   }
-  if (!usable && sink->error_count() + sink->dropped() == errors_before) {
+  if (!usable && Errors(*sink) == errors_before) {
     // glslang refused the shader without saying why: never report success.
     sink->Report(Info(Diag::InternalError), sources.front(), {0, 0},
                  "glslang rejected the shader without a message");
   }
-  result.ok = sink->error_count() + sink->dropped() == errors_before;
+  result.ok = Errors(*sink) == errors_before;
   return result;
 }
 

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "diag.h"
+#include "scan.h"
 #include "source_text.h"
 
 namespace arbiter::glsl {
@@ -86,8 +87,6 @@ std::string CleanText(std::string_view text) {
   }
   return collapsed;
 }
-
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The byte range of `token` on 1-based `line` of `file` (a whole-word match for identifiers);
 // the start of the line when it is not there.
@@ -199,7 +198,9 @@ struct Relaxation {
   std::string_view needle;
   bool link;  // a message of the link step
   bool vertex_only;
-  Diag warning;  // CompileError: dropped without a message
+  Diag warning;              // CompileError: dropped without a message
+  int only_version = 0;      // 110: an error of 1.20 that 1.10 does not make; 0: both
+  bool object_only = false;  // dropped for a shader object, kept for a program
 };
 
 constexpr Relaxation kRelaxations[] = {
@@ -210,7 +211,9 @@ constexpr Relaxation kRelaxations[] = {
     // 4.1.8: "Member types must be ... defined in-place by embedding another struct
     // definition"; glslang 12 follows later versions. It still parses the definition and
     // scopes its name at the level of the outer struct, as 4.1.8 says.
-    {"cannot nest a structure definition inside a structure", false, false, Diag::CompileError},
+    // 1.20 4.1.8 forbids them: "Embedded structures are not supported."
+    {"cannot nest a structure definition inside a structure", false, false, Diag::CompileError,
+     110},
     // 5.8 and 5.7: entire structures are l-values, can be compared and initialize a
     // structure variable (4.1.8), array fields or not;
     // glslang applies 1.20's rule for structures with array fields. Whole arrays as
@@ -226,13 +229,20 @@ constexpr Relaxation kRelaxations[] = {
     // 7.2: only assigning both gl_FragColor and gl_FragData is an error; glslang counts any
     // use. strict_builtins.cpp checks the static writes instead.
     {"Cannot use both gl_FragColor and gl_FragData", true, false, Diag::CompileError},
+    // A shader object (glCompileShader) may lack main() and call functions that another
+    // object of the program defines: errors of the program only.
+    {"Missing entry point", true, false, Diag::CompileError, 0, true},
+    {"No function definition (body) found", true, false, Diag::CompileError, 0, true},
 };
 
 // The relaxation that applies to an error, if any.
-const Relaxation* RelaxedIn110(std::string_view body, Stage stage, bool link) {
+const Relaxation* Relaxed(std::string_view body, const InfoLogContext& ctx, bool link) {
   for (const Relaxation& r : kRelaxations) {
     if (r.link != link || body.find(r.needle) == std::string_view::npos) continue;
-    if (r.vertex_only && (stage != Stage::Vertex || body.find("Lod'") == std::string_view::npos)) {
+    if (r.only_version != 0 && r.only_version != ctx.version) continue;
+    if (r.object_only && ctx.program) continue;
+    if (r.vertex_only &&
+        (ctx.stage != Stage::Vertex || body.find("Lod'") == std::string_view::npos)) {
       continue;
     }
     return &r;
@@ -240,10 +250,10 @@ const Relaxation* RelaxedIn110(std::string_view body, Stage stage, bool link) {
   return nullptr;
 }
 
-// Returns false when the message was dropped by a 1.10 relaxation.
-bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage stage, bool link,
-          compiler::DiagnosticSink* sink) {
-  const Relaxation* relaxed = m.warning ? nullptr : RelaxedIn110(m.body, stage, link);
+// Returns false when the message was dropped by a relaxation.
+bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::DiagnosticSink* sink) {
+  const std::vector<const SourceFile*>& sources = ctx.sources;
+  const Relaxation* relaxed = m.warning ? nullptr : Relaxed(m.body, ctx, link);
   if (relaxed != nullptr && relaxed->warning == Diag::CompileError) return false;
   // glslang's messages name the words source_text.cpp renamed as it saw them.
   std::string restored = RestoreSpelling(m.body);
@@ -303,7 +313,10 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
         "limit, but no front end parses this: split the expression or statement",
         kParserStackDepth);
   } else if (relaxed != nullptr) {
-    message += "; GLSL 1.10 leaves such an access undefined (sections 5.5 and 5.6), it is no error";
+    message += fmt::format(
+        "; {} leaves such an access undefined (sections 5.5 and 5.6), it is "
+        "no error",
+        ctx.version == 120 ? "GLSL 1.20" : "GLSL 1.10");
   } else if (!token.empty()) {
     message += fmt::format(" ('{}')", token);
   }
@@ -338,10 +351,10 @@ bool Emit(const Message& m, const std::vector<const SourceFile*>& sources, Stage
 
 }  // namespace
 
-int ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources, Stage stage,
-                  bool link, compiler::DiagnosticSink* sink) {
+int ReportInfoLog(const char* log, const InfoLogContext& ctx, bool link,
+                  compiler::DiagnosticSink* sink) {
   int relaxed = 0;
-  if (log == nullptr || sources.empty()) return relaxed;
+  if (log == nullptr || ctx.sources.empty()) return relaxed;
   std::string_view rest(log);
   Message current;
   bool have = false;
@@ -352,7 +365,7 @@ int ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources
     bool error = line.substr(0, 7) == "ERROR: ";
     bool warning = line.substr(0, 9) == "WARNING: ";
     if (error || warning) {
-      if (have && !Emit(current, sources, stage, link, sink)) ++relaxed;
+      if (have && !Emit(current, ctx, link, sink)) ++relaxed;
       current = Message{warning, std::string(line.substr(error ? 7 : 9))};
       have = true;
     } else if (have && !Trim(line).empty()) {
@@ -360,14 +373,13 @@ int ReportInfoLog(const char* log, const std::vector<const SourceFile*>& sources
       current.body += Trim(line);
     }
   }
-  if (have && !Emit(current, sources, stage, link, sink)) ++relaxed;
+  if (have && !Emit(current, ctx, link, sink)) ++relaxed;
   return relaxed;
 }
 
-bool OnlyRelaxedErrors(const char* log, const std::vector<const SourceFile*>& sources, Stage stage,
-                       bool link) {
+bool OnlyRelaxedErrors(const char* log, const InfoLogContext& ctx, bool link) {
   compiler::DiagnosticSink scratch(0);
-  int relaxed = ReportInfoLog(log, sources, stage, link, &scratch);
+  int relaxed = ReportInfoLog(log, ctx, link, &scratch);
   return relaxed > 0 && scratch.error_count() == 0;
 }
 

@@ -3,11 +3,13 @@
 #include "arbiter/glsl/link.h"
 
 #include <fmt/format.h>
+#include <glslang/Public/ShaderLang.h>
 
 #include <string>
 
 #include "diag.h"
 #include "info_log.h"
+#include "prepare.h"
 #include "reflect_ast.h"
 
 namespace arbiter::glsl {
@@ -248,12 +250,13 @@ LinkResult LinkProgram(const Sources& vertex, const Sources& fragment, const Lin
     return result;
   }
   // Each stage's own diagnostics; a vertex shader that never writes gl_Position does not link.
-  CheckOptions vertex_options;
-  vertex_options.link_as_program = true;
-  bool vertex_ok = CheckShader(Stage::Vertex, vertex, vertex_options, sink).ok;
-  bool fragment_ok = CheckShader(Stage::Fragment, fragment, CheckOptions{}, sink).ok;
+  CheckOptions check = options.check;
+  check.link = true;
+  if (check.profile == nullptr) check.profile = options.profile;
+  bool vertex_ok = CheckShader(Stage::Vertex, vertex, check, sink).ok;
+  bool fragment_ok = CheckShader(Stage::Fragment, fragment, check, sink).ok;
 
-  CompiledProgram program(vertex, fragment);
+  CompiledProgram program(vertex, fragment, check.profile);
   result.vertex.ok = program.Reflect(Stage::Vertex, &result.vertex);
   result.fragment.ok = program.Reflect(Stage::Fragment, &result.fragment);
   if (result.vertex.ok && result.fragment.ok) {
@@ -267,7 +270,7 @@ LinkResult LinkProgram(const Sources& vertex, const Sources& fragment, const Lin
     if (!program.linked() && vertex_ok && fragment_ok && Errors(*sink) == before) {
       Sources all = vertex;
       all.insert(all.end(), fragment.begin(), fragment.end());
-      ReportInfoLog(program.link_log(), all, /*link=*/true, sink);
+      ReportInfoLog(program.link_log(), InfoLogContext{all, Stage::Fragment}, /*link=*/true, sink);
       if (Errors(*sink) == before) {
         sink->Report(Info(Diag::LinkError), fragment.front(), {0, 0},
                      "glslang refused to link the program without a message");
@@ -279,6 +282,52 @@ LinkResult LinkProgram(const Sources& vertex, const Sources& fragment, const Lin
   }
   result.ok = Errors(*sink) == errors_before;
   return result;
+}
+
+bool LinkShaders(const std::vector<ShaderObject>& objects, const LinkOptions& options,
+                 compiler::DiagnosticSink* sink) {
+  const int errors_before = Errors(*sink);
+  Sources vertex_strings;
+  Sources fragment_strings;
+  int counts[2] = {0, 0};
+  for (const ShaderObject& object : objects) {
+    ++counts[object.stage == Stage::Vertex ? 0 : 1];
+    Sources& strings = object.stage == Stage::Vertex ? vertex_strings : fragment_strings;
+    strings.insert(strings.end(), object.strings.begin(), object.strings.end());
+  }
+  if (counts[0] == 1 && counts[1] == 1) {
+    return LinkProgram(vertex_strings, fragment_strings, options, sink).ok;
+  }
+  CheckOptions check = options.check;
+  if (check.profile == nullptr) check.profile = options.profile;
+  if (objects.size() == 1) {
+    check.link = true;
+    return CheckShader(objects.front().stage, objects.front().strings, check, sink).ok;
+  }
+  // Several objects of a stage: each compiled as an object, then glslang links them all.
+  check.link = false;
+  for (const ShaderObject& object : objects) CheckShader(object.stage, object.strings, check, sink);
+  if (Errors(*sink) != errors_before) return false;
+  std::vector<std::unique_ptr<glslang::TShader>> shaders;
+  glslang::TProgram program;
+  Sources all;
+  for (const ShaderObject& object : objects) {
+    compiler::DiagnosticSink scratch(0);
+    PreparedShader prepared = PrepareShader(object.stage, object.strings, check, &scratch);
+    bool parsed = false;
+    shaders.push_back(ParsePrepared(object.stage, prepared, &parsed));
+    program.addShader(shaders.back().get());
+    all.insert(all.end(), object.strings.begin(), object.strings.end());
+  }
+  constexpr auto kMessages = static_cast<EShMessages>(EShMsgCascadingErrors);
+  if (!program.link(kMessages)) {
+    ReportInfoLog(program.getInfoLog(), InfoLogContext{all, objects.front().stage}, true, sink);
+    if (Errors(*sink) == errors_before) {
+      sink->Report(Info(Diag::LinkError), all.front(), {0, 0},
+                   "glslang refused to link the program without a message");
+    }
+  }
+  return Errors(*sink) == errors_before;
 }
 
 }  // namespace arbiter::glsl

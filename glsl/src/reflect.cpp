@@ -15,7 +15,9 @@
 
 #include "diag.h"
 #include "info_log.h"
+#include "prepare.h"
 #include "reflect_ast.h"
+#include "scan.h"
 #include "source_text.h"
 
 namespace arbiter::glsl {
@@ -161,9 +163,6 @@ bool RangeOfLoc(const Sources& sources, const glslang::TSourceLoc& loc, size_t l
   *range = {begin, end};
   return true;
 }
-
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The text with comments and preprocessor lines turned into blanks (offsets and line ends
 // kept): where declarations are looked for.
@@ -483,19 +482,6 @@ class UseCollector : public glslang::TIntermTraverser {
   Stage stage_;
 };
 
-bool HasMain(TIntermNode* root) {
-  glslang::TIntermAggregate* top = root->getAsAggregate();
-  if (top == nullptr) return false;
-  for (TIntermNode* child : top->getSequence()) {
-    glslang::TIntermAggregate* function = child->getAsAggregate();
-    if (function != nullptr && function->getOp() == glslang::EOpFunction &&
-        function->getName() == "main(") {
-      return true;
-    }
-  }
-  return false;
-}
-
 // `name` accesses a part of another access in the list (gl_LightSource[0].diffuse of
 // gl_LightSource[0]): counting both would count it twice.
 bool Covered(const std::string& name, BuiltinKind kind, const std::vector<BuiltinUse>& list) {
@@ -541,10 +527,24 @@ struct StaticUses {
 
 std::string_view StageName(Stage stage) { return stage == Stage::Vertex ? "vertex" : "fragment"; }
 
+bool DefinesMain(TIntermNode* root) {
+  glslang::TIntermAggregate* top = root->getAsAggregate();
+  if (top == nullptr) return false;
+  for (TIntermNode* child : top->getSequence()) {
+    glslang::TIntermAggregate* function = child->getAsAggregate();
+    if (function != nullptr && function->getOp() == glslang::EOpFunction &&
+        function->getName() == "main(") {
+      return true;
+    }
+  }
+  return false;
+}
+
 // ---- CompiledProgram ------------------------------------------------------------------------
 
-CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
-    : sources_{vertex, fragment} {
+CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment,
+                                 const compiler::LimitProfile* profile)
+    : sources_{vertex, fragment}, profile_(profile) {
   program_ = std::make_unique<glslang::TProgram>();
   bool all = true;
   bool any = false;
@@ -552,24 +552,19 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
     const Sources& sources = sources_[Index(stage)];
     if (sources.empty()) continue;
     any = true;
-    std::vector<const char*> strings;
-    std::vector<int> lengths;
-    std::vector<const char*> names;
-    std::vector<std::string>& texts = texts_[Index(stage)];
-    for (const SourceFile* file : sources) texts.push_back(PrepareForGlslang(file->text()));
-    for (size_t i = 0; i < sources.size(); ++i) {
-      strings.push_back(texts[i].data());
-      lengths.push_back(static_cast<int>(texts[i].size()));
-      names.push_back(sources[i]->path().c_str());
+    // As CheckShader parses it (its diagnostics were reported there).
+    compiler::DiagnosticSink scratch(0);
+    CheckOptions options;
+    options.profile = profile_;
+    PreparedShader prepared = PrepareShader(stage, sources, options, &scratch);
+    if (!prepared.checked) {
+      all = false;
+      continue;
     }
-    auto shader = std::make_unique<glslang::TShader>(stage == Stage::Vertex ? EShLangVertex
-                                                                            : EShLangFragment);
-    shader->setStringsWithLengthsAndNames(strings.data(), lengths.data(), names.data(),
-                                          static_cast<int>(strings.size()));
-    // As CheckShader: without #version a shader is 1.10 desktop.
-    parsed_[Index(stage)] =
-        shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages) ||
-        OnlyRelaxedErrors(shader->getInfoLog(), sources, stage, /*link=*/false);
+    bool parsed = false;
+    auto shader = ParsePrepared(stage, prepared, &parsed);
+    InfoLogContext log{sources, stage, prepared.version, /*program=*/true, nullptr};
+    parsed_[Index(stage)] = parsed || OnlyRelaxedErrors(shader->getInfoLog(), log, /*link=*/false);
     if (parsed_[Index(stage)]) {
       TIntermNode* root = shader->getIntermediate()->getTreeRoot();
       UseCollector collector(stage);
@@ -583,12 +578,11 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment)
     shaders_[Index(stage)] = std::move(shader);
   }
   if (all && any) {
-    linked_ =
-        program_->link(kMessages) || OnlyRelaxedErrors(program_->getInfoLog(),
-                                                       sources_[Index(Stage::Fragment)].empty()
-                                                           ? sources_[Index(Stage::Vertex)]
-                                                           : sources_[Index(Stage::Fragment)],
-                                                       Stage::Fragment, /*link=*/true);
+    const Sources& any_sources = sources_[Index(Stage::Fragment)].empty()
+                                     ? sources_[Index(Stage::Vertex)]
+                                     : sources_[Index(Stage::Fragment)];
+    InfoLogContext log{any_sources, Stage::Fragment, 110, /*program=*/true, nullptr};
+    linked_ = program_->link(kMessages) || OnlyRelaxedErrors(program_->getInfoLog(), log, true);
   }
 }
 
@@ -611,7 +605,7 @@ bool CompiledProgram::Reflect(Stage stage, Reflection* out) const {
   if (!parsed(stage)) return false;
   glslang::TIntermediate* ast = shaders_[Index(stage)]->getIntermediate();
   TIntermNode* root = ast != nullptr ? ast->getTreeRoot() : nullptr;
-  if (root == nullptr || !HasMain(root)) return false;
+  if (root == nullptr || !DefinesMain(root)) return false;
 
   const StaticUses& uses = *uses_[Index(stage)];
   DeclarationFinder declarations(sources);

@@ -6,8 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "arbiter/compiler/limits.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/reflect.h"
+
+class TIntermNode;
 
 namespace glslang {
 class TShader;
@@ -25,7 +28,8 @@ class CompiledProgram {
  public:
   // Either list may be empty (a one-stage program). The sources must outlive the object.
   CompiledProgram(const std::vector<const compiler::SourceFile*>& vertex,
-                  const std::vector<const compiler::SourceFile*>& fragment);
+                  const std::vector<const compiler::SourceFile*>& fragment,
+                  const compiler::LimitProfile* profile = nullptr);
   ~CompiledProgram();
   CompiledProgram(const CompiledProgram&) = delete;
   CompiledProgram& operator=(const CompiledProgram&) = delete;
@@ -45,7 +49,7 @@ class CompiledProgram {
   const std::vector<const compiler::SourceFile*>& StageSources(Stage stage) const;
 
   std::vector<const compiler::SourceFile*> sources_[2];
-  std::vector<std::string> texts_[2];  // what glslang parses (source_text.h)
+  const compiler::LimitProfile* profile_;  // the extensions the target has
   std::unique_ptr<glslang::TShader> shaders_[2];
   // Each stage's static uses, collected before glslang's link removes uncalled functions.
   std::unique_ptr<StaticUses> uses_[2];
@@ -53,6 +57,9 @@ class CompiledProgram {
   bool parsed_[2] = {false, false};
   bool linked_ = false;
 };
+
+// Whether the AST defines main() (a shader object need not).
+bool DefinesMain(TIntermNode* root);
 
 // The resources of ResourceUse.
 enum class Resource { UniformComponents, VaryingFloats, VertexAttribs, Samplers };

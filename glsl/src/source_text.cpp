@@ -8,6 +8,8 @@
 #include <set>
 #include <vector>
 
+#include "scan.h"
+
 namespace arbiter::glsl {
 namespace {
 
@@ -23,9 +25,6 @@ constexpr Substitute kSubstitutes[] = {
     {"active", "ac____"}, {"case", "ca__"},           {"common", "co____"},
     {"filter", "fi____"}, {"partition", "pa_______"},
 };
-
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Replaces whole words of `text` by same-length words.
 void ReplaceWords(std::string* text, bool to_glslang) {
@@ -47,45 +46,6 @@ void ReplaceWords(std::string* text, bool to_glslang) {
       }
     }
   }
-}
-
-struct Token {
-  std::string_view text;
-  size_t offset;
-};
-
-// Identifiers, numbers and single punctuation characters, without comments and
-// preprocessor lines.
-std::vector<Token> Tokens(std::string_view text) {
-  std::vector<Token> out;
-  bool line_start = true;
-  for (size_t i = 0; i < text.size();) {
-    char c = text[i];
-    if (c == '\n') {
-      line_start = true;
-      ++i;
-    } else if (std::isspace(static_cast<unsigned char>(c))) {
-      ++i;
-    } else if (line_start && c == '#') {
-      while (i < text.size() && text[i] != '\n') ++i;
-    } else if (text.substr(i, 2) == "//") {
-      while (i < text.size() && text[i] != '\n') ++i;
-    } else if (text.substr(i, 2) == "/*") {
-      size_t end = text.find("*/", i + 2);
-      i = end == std::string_view::npos ? text.size() : end + 2;
-    } else {
-      line_start = false;
-      size_t start = i++;
-      if (IsIdentChar(c)) {
-        while (i < text.size() && (IsIdentChar(text[i]) || text[i] == '.')) {
-          if (text[i] == '.' && IsIdentStart(c)) break;  // a field selection
-          ++i;
-        }
-      }
-      out.push_back({text.substr(start, i - start), start});
-    }
-  }
-  return out;
 }
 
 // The index of the token that closes the bracket opened at `open`; tokens.size() if none.
@@ -168,7 +128,7 @@ void DoubleBrace(std::string* text, size_t at, char brace) {
 // nested scope 1.10 describes. Bodies are found at file level as a '{' after ')'; a text
 // whose braces do not balance outside directives is left as it is.
 void NestFunctionBodies(std::string* text) {
-  std::vector<Token> tokens = Tokens(*text);
+  std::vector<Token> tokens = Tokenize(*text);
   std::vector<std::pair<size_t, size_t>> bodies;  // offsets of '{' and '}'
   for (size_t i = 0; i < tokens.size(); ++i) {
     std::string_view t = tokens[i].text;

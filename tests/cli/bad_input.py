@@ -60,7 +60,7 @@ CASES = [
     ("empty ARB file", {"empty.vp": b""}, ["check", "empty.vp"], 1,
      [("arb-input-empty", 1, 1)]),
     ("empty GLSL file", {"empty.vert": b""}, ["check", "empty.vert"], 1,
-     [("glsl-link-missing-main", None, None)]),
+     [("glsl-syntax-error", 1, 1)]),
     ("binary garbage, ARB extension", {"garbage.vp": GARBAGE}, ["check", "garbage.vp"], 1,
      [("arb-header-missing", 1, 1)]),
     ("binary garbage, GLSL extension", {"garbage.frag": GARBAGE}, ["check", "garbage.frag"], 1,

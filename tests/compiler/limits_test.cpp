@@ -210,7 +210,8 @@ TEST_F(LoadLimitProfileTest, UnknownBase) {
 TEST_F(LoadLimitProfileTest, WrongShapes) {
   EXPECT_EQ(ErrorOf(R"([1, 2])"), "limits file '" + file_ + "' must hold a JSON object");
   EXPECT_EQ(ErrorOf(R"({"limit": {}})"),
-            "unknown member 'limit' in '" + file_ + "' (expected 'name', 'base' and 'limits')");
+            "unknown member 'limit' in '" + file_ +
+                "' (expected 'name', 'base', 'limits' and 'extensions')");
   EXPECT_EQ(ErrorOf(R"({"limits": [1]})"),
             "'limits' in '" + file_ + "' must be an object of limit keys");
   EXPECT_EQ(ErrorOf(R"({"name": 1})"), "'name' in '" + file_ + "' must be a string");

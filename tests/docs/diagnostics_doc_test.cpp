@@ -50,7 +50,14 @@ std::optional<compiler::LimitProfile> Profile(const std::string& name, const fs:
 // `ARGS: --limits NAME|FILE.json` / `--stage arbvp|arbfp` comment of golden inputs.
 void CheckFile(const compiler::SourceFile& source, compiler::DiagnosticSink* sink) {
   if (std::optional<glsl::Stage> stage = glsl::StageFromPath(source.path())) {
-    glsl::CheckShader(*stage, {&source}, glsl::CheckOptions{}, sink);
+    // A GLSL input's `ARGS: --link` judges it as a program, as `arbiter check --link`.
+    glsl::CheckOptions glsl_options;
+    size_t args = source.text().find("ARGS:");
+    glsl_options.link =
+        args != std::string::npos &&
+        source.text().substr(args, source.text().find('\n', args) - args).find("--link") !=
+            std::string::npos;
+    glsl::CheckShader(*stage, {&source}, glsl_options, sink);
     return;
   }
   CheckOptions options;
@@ -303,6 +310,16 @@ constexpr CommandLineCode kCommandLineCodes[] = {
      "says: 0:7(7): error: illegal use of reserved word `dmat2' [driver-check-differs]\n"
      "float dmat2 = 1.0;\n"
      "^\n```\n\n"},
+    {"glsl-stage-unknown",
+     "**error**: a `.glsl` file whose name does not say its stage (`NAME.vert.glsl`,\n"
+     "`NAME.frag.glsl`, `.vert`, `.vs`, `.vsh`, `.frag`, `.fs`, `.fsh`) and no `--stage`.\n\n"
+     "Example, in `docs/diagnostics/`:\n\n"
+     "```sh\n$ arbiter check shader.glsl\n```\n\n"
+     "```text\n"
+     "shader.glsl: error: cannot tell the stage of 'shader.glsl': name it NAME.vert.glsl or "
+     "NAME.frag.glsl (or .vert, .frag, .vsh, .fsh), or give --stage vert|frag "
+     "[glsl-stage-unknown]\n"
+     "[exit 1]\n```\n\n"},
     {"runtime-gl-error",
      "**error**: a GL call failed while Mesa checked a shader for `--driver-check`, so Mesa's\n"
      "verdict is unknown. Exit code 3. It reports a failure of the driver, not of the shader;\n"
@@ -339,7 +356,7 @@ std::string Generate() {
   std::string out =
       "# arbiter diagnostics\n\n"
       "Every diagnostic arbiter reports, generated from the tables in\n"
-      "`arbvp/src/diagnostics.def` (ARB programs) and `glsl/src/diagnostics.def` (GLSL 1.10),\n"
+      "`arbvp/src/diagnostics.def` (ARB programs) and `glsl/src/diagnostics.def` (GLSL),\n"
       "and the command line's own codes, by `tests/docs/diagnostics_doc_test.cpp` (run it with\n"
       "`ARBITER_UPDATE_GOLDEN=1` to regenerate). Codes are stable: a code never changes\n"
       "meaning. Each entry shows an input that triggers it, from `corpus/`, `tests/golden/` or\n"

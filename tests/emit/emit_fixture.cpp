@@ -53,7 +53,6 @@ std::string GlslErrors(ProgramKind stage, const std::string& glsl) {
   compiler::DiagnosticSink sink(0);
   glsl::CheckOptions options;
   options.link = true;
-  options.link_as_program = false;
   glsl::CheckResult r = glsl::CheckShader(vertex ? glsl::Stage::Vertex : glsl::Stage::Fragment,
                                           {&file}, options, &sink);
   std::string errors = Render(sink);

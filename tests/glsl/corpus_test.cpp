@@ -73,7 +73,6 @@ TEST_P(GlslCorpusTest, Verdict) {
   CheckOptions options;
   bool link = config.values["check_link"] == "true";
   options.link = link;
-  options.link_as_program = link;
   CheckResult result = CheckShader(*StageFromPath(name), {&source}, options, &sink);
   std::string log;
   for (const compiler::Diagnostic& d : sink.diagnostics()) {

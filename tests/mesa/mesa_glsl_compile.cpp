@@ -4,7 +4,7 @@
 //   mesa_glsl_compile [--driver softpipe|llvmpipe] [--stats] FILE...
 //
 // Each file is judged as the GLSL corpus test judges it (formats.md): the piglit `// [config]`
-// block at the top decides; `check_link: true` compiles and links (arbiter: link_as_program),
+// block at the top decides; `check_link: true` compiles and links (arbiter: CheckOptions::link),
 // anything else compiles only. Mesa compiles through an OSMesa context (arbiter::runtime);
 // arbiter through glsl::CheckShader in this process. One line per file:
 //   {"path":..., "stage":"vert"|"frag", "link":bool, "expect":"pass"|"fail"|null,
@@ -112,7 +112,6 @@ Json JudgeOne(arbiter::runtime::MesaContext& mesa, const std::string& path, Tota
   arbiter::compiler::DiagnosticSink sink(0);
   arbiter::glsl::CheckOptions options;
   options.link = link;
-  options.link_as_program = link;
   const arbiter::glsl::CheckResult result =
       arbiter::glsl::CheckShader(*stage, {&source}, options, &sink);
   totals->arbiter_ms += Milliseconds(start);

@@ -9,15 +9,14 @@ namespace arbiter::glsl {
 
 bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
                      const compiler::SourceFile** file, compiler::Range* range) {
-  auto is_ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   for (const compiler::SourceFile* f : ctx.sources) {
     for (uint32_t n = 1; n <= f->line_count(); ++n) {
       std::string_view line = f->LineText(n);
       if (!keyword.empty() && line.find(keyword) == std::string_view::npos) continue;
       for (size_t at = line.find(name); at != std::string_view::npos;
            at = line.find(name, at + 1)) {
-        bool before = at == 0 || !is_ident(line[at - 1]);
-        bool after = at + name.size() >= line.size() || !is_ident(line[at + name.size()]);
+        bool before = at == 0 || !IsIdentChar(line[at - 1]);
+        bool after = at + name.size() >= line.size() || !IsIdentChar(line[at + name.size()]);
         if (before && after) {
           *file = f;
           uint32_t begin = f->LineStart(n) + static_cast<uint32_t>(at);
@@ -28,24 +27,6 @@ bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::strin
     }
   }
   return false;
-}
-
-std::string BlankComments(std::string_view text) {
-  std::string out(text);
-  for (size_t i = 0; i + 1 < out.size(); ++i) {
-    if (out[i] == '/' && out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-    } else if (out[i] == '/' && out[i + 1] == '*') {
-      out[i] = out[i + 1] = ' ';
-      i += 2;
-      while (i + 1 < out.size() && !(out[i] == '*' && out[i + 1] == '/')) {
-        if (out[i] != '\n') out[i] = ' ';
-        ++i;
-      }
-      if (i + 1 < out.size()) out[i] = out[i + 1] = ' ';
-    }
-  }
-  return out;
 }
 
 const std::string& BlankedText(const StrictContext& ctx, size_t index) {
@@ -70,6 +51,10 @@ bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t
   if (begin + length > (*file)->text().size()) return false;
   *range = {begin, static_cast<uint32_t>(begin + length)};
   return true;
+}
+
+std::string_view VersionName(const StrictContext& ctx) {
+  return ctx.version == 120 ? "GLSL 1.20" : "GLSL 1.10";
 }
 
 void RunStrictChecks(const StrictContext& ctx) {

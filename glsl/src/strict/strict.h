@@ -1,5 +1,6 @@
-// The GLSL 1.10 strictness layer: rules of the specification that glslang 12 does not
-// enforce, one file per chapter (strict_<chapter>.cpp), run in a fixed order.
+// The strictness layer: rules of GLSL 1.10 and 1.20 that glslang 12 does not enforce, one
+// file per chapter (strict_<chapter>.cpp), run in a fixed order. A rule of 1.10 that 1.20
+// drops checks ctx.version.
 #pragma once
 
 #include <string>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "../diag.h"
+#include "../scan.h"
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/check.h"
@@ -27,15 +29,17 @@ struct FragmentOutputWrites {
 
 struct StrictContext {
   Stage stage;
+  int version;  // 110 or 120 (prepare.h)
   const std::vector<const compiler::SourceFile*>& sources;
   compiler::DiagnosticSink* sink;
   const glslang::TIntermediate& ast;  // the compiled shader
-  bool link;                          // CheckOptions::link: the link step runs
-  bool linked;                        // the link step ran and succeeded
-  bool as_program;                    // CheckOptions::link_as_program
+  bool link;                          // CheckOptions::link: judged as a program
+  bool linked;                        // glslang's link step ran and succeeded
   // Whether the shader assigns gl_FragColor and gl_FragData (7.2): found in the whole AST by
   // CheckBuiltinVariables, judged after the link step by CheckFragmentOutputs.
   FragmentOutputWrites* fragment_writes;
+  // What glslang reads before the shader's first line (-D, -U, --preamble; prepare.h).
+  std::string_view preamble = {};
   // Each source with its comments blanked, made once for the chapters that scan the text
   // (BlankedText); empty until the first asks.
   mutable std::vector<std::string> blanked = {};
@@ -72,8 +76,6 @@ void CheckFragmentOutputs(const StrictContext& ctx);  // strict_builtins.cpp
 bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
                      const compiler::SourceFile** file, compiler::Range* range);
 
-// The text with comments replaced by blanks (newlines kept), so offsets stay valid.
-std::string BlankComments(std::string_view text);
 // BlankComments of ctx.sources[index], computed once per shader.
 const std::string& BlankedText(const StrictContext& ctx, size_t index);
 
@@ -81,6 +83,9 @@ const std::string& BlankedText(const StrictContext& ctx, size_t index);
 // bytes long; false when the location is not in the sources.
 bool RangeOfLoc(const StrictContext& ctx, const glslang::TSourceLoc& loc, size_t length,
                 const compiler::SourceFile** file, compiler::Range* range);
+
+// "GLSL 1.10" or "GLSL 1.20", for messages.
+std::string_view VersionName(const StrictContext& ctx);
 
 // Runs every chapter's checks on the AST of the whole shader, before glslang's link step
 // removes the functions main() does not call.

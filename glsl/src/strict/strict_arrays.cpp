@@ -33,8 +33,6 @@
 namespace arbiter::glsl {
 namespace {
 
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool IsDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
 struct Tok {
@@ -555,6 +553,10 @@ class ArraySizes {
 
 }  // namespace
 
-void CheckArraySizes(const StrictContext& ctx) { ArraySizes(ctx).Run(); }
+void CheckArraySizes(const StrictContext& ctx) {
+  // 1.20 4.3.3: "An integral constant expression is a constant expression that evaluates to a
+  // scalar integer", built-in calls included: what glslang checks.
+  if (ctx.version == 110) ArraySizes(ctx).Run();
+}
 
 }  // namespace arbiter::glsl

@@ -12,6 +12,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 
+#include "../reflect_ast.h"
 #include "strict.h"
 
 namespace arbiter::glsl {
@@ -100,8 +101,8 @@ class BuiltinUses : public glslang::TIntermTraverser {
     ctx_.sink->Report(Info(Diag::TexCoordIndex), file, range,
                       fmt::format("gl_TexCoord index {} is past the last texture coordinate "
                                   "set: gl_TexCoord has at most gl_MaxTextureCoords ({}) "
-                                  "elements (GLSL 1.10 section 7.6)",
-                                  value, max));
+                                  "elements ({} section 7.6)",
+                                  value, max, VersionName(ctx_)));
   }
 
   const StrictContext& ctx_;
@@ -143,7 +144,8 @@ void CheckBuiltinVariables(const StrictContext& ctx) {
 
 void CheckFragmentOutputs(const StrictContext& ctx) {
   const FragmentOutputWrites& writes = *ctx.fragment_writes;
-  if (ctx.stage != Stage::Fragment || !ctx.link || !writes.color || !writes.data) return;
+  // A compile error in drivers (Mesa), where glslang reports it at link time only.
+  if (ctx.stage != Stage::Fragment || !writes.color || !writes.data) return;
   const compiler::SourceFile* file = writes.data_file;
   if (file == nullptr) file = ctx.sources.front();
   ctx.sink->Report(Info(Diag::LinkFragColorAndData), file, writes.data_range,
@@ -151,9 +153,11 @@ void CheckFragmentOutputs(const StrictContext& ctx) {
 }
 
 void CheckPositionWritten(const StrictContext& ctx) {
-  if (ctx.stage != Stage::Vertex || !ctx.linked) return;
+  if (ctx.stage != Stage::Vertex || (ctx.link && !ctx.linked)) return;
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;
+  // A shader object without main() may leave gl_Position to another one.
+  if (!ctx.link && !DefinesMain(root)) return;
   PositionWrites finder;
   root->traverse(&finder);
   if (finder.written) return;
@@ -165,11 +169,11 @@ void CheckPositionWritten(const StrictContext& ctx) {
     range = {0, 0};
   }
   ctx.sink->Report(Info(Diag::PositionUnwritten),
-                   ctx.as_program ? compiler::Severity::Error : compiler::Severity::Warning, file,
-                   range,
-                   "the vertex shader never writes gl_Position; every execution of a vertex "
-                   "shader must write it (GLSL 1.10 section 7.1), and drivers refuse to link "
-                   "it into a program");
+                   ctx.link ? compiler::Severity::Error : compiler::Severity::Warning, file, range,
+                   fmt::format("the vertex shader never writes gl_Position; every execution of a "
+                               "vertex shader must write it ({} section 7.1), and drivers "
+                               "refuse to link it into a program",
+                               VersionName(ctx)));
 }
 
 }  // namespace arbiter::glsl

@@ -19,9 +19,6 @@
 namespace arbiter::glsl {
 namespace {
 
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 struct Tok {
   std::string text;
   size_t offset;  // in the file, of the token or of the macro name it was expanded from
@@ -202,13 +199,33 @@ struct Group {
   bool unknown;  // a condition could not be evaluated: nothing inside is judged
 };
 
+// The macros of the preamble (-D, -U, --preamble): defined before the shader's first line.
+std::map<std::string, Macro, std::less<>> PreambleMacros(std::string_view preamble) {
+  std::map<std::string, Macro, std::less<>> macros;
+  const std::string blanked = BlankComments(preamble);
+  for (const Directive& d : Directives(blanked)) {
+    if (d.words.empty() || d.words[0].kind != Token::Identifier) continue;
+    std::string name(d.words[0].text);
+    if (d.name == "undef") {
+      macros.erase(name);
+    } else if (d.name == "define") {
+      size_t name_end = d.words[0].offset + d.words[0].text.size();
+      Macro macro;
+      macro.function_like = name_end < d.end && blanked[name_end] == '(';
+      macro.body = blanked.substr(name_end, d.end - name_end);
+      macros[name] = macro;
+    }
+  }
+  return macros;
+}
+
 }  // namespace
 
 void CheckConditionals(const StrictContext& ctx) {
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const compiler::SourceFile* file = ctx.sources[index];
     const std::string& blanked = BlankedText(ctx, index);
-    std::map<std::string, Macro, std::less<>> macros;
+    std::map<std::string, Macro, std::less<>> macros = PreambleMacros(ctx.preamble);
     std::vector<Group> groups;
     auto active = [&] { return groups.empty() || groups.back().active; };
     auto judged = [&] { return groups.empty() || !groups.back().unknown; };

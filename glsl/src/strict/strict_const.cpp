@@ -2,7 +2,7 @@
 // other const variables (not including function call parameters), or expressions of these.
 // Constructors may be used in such expressions, but function calls may not." glslang folds
 // built-in calls such as sin(1.0) into constants (as GLSL 1.20 allows), so the call is gone
-// from the AST: this rule reads the declaration's tokens instead.
+// from the AST: this rule reads the declaration's tokens instead. GLSL 1.10 only.
 #include <fmt/format.h>
 
 #include <cctype>
@@ -16,58 +16,6 @@
 namespace arbiter::glsl {
 namespace {
 
-struct Tok {
-  std::string_view text;
-  uint32_t offset;
-};
-
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-// Identifiers, numbers and single punctuation characters, without comments and
-// preprocessor lines.
-std::vector<Tok> Tokens(std::string_view text) {
-  std::vector<Tok> out;
-  size_t i = 0;
-  bool line_start = true;
-  while (i < text.size()) {
-    char c = text[i];
-    if (c == '\n') {
-      line_start = true;
-      ++i;
-      continue;
-    }
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++i;
-      continue;
-    }
-    if (line_start && c == '#') {  // a directive runs to the end of its line
-      while (i < text.size() && text[i] != '\n') ++i;
-      continue;
-    }
-    line_start = false;
-    if (text.substr(i, 2) == "//") {
-      while (i < text.size() && text[i] != '\n') ++i;
-      continue;
-    }
-    if (text.substr(i, 2) == "/*") {
-      size_t end = text.find("*/", i + 2);
-      i = end == std::string_view::npos ? text.size() : end + 2;
-      continue;
-    }
-    size_t start = i;
-    if (IsIdentStart(c)) {
-      while (i < text.size() && IsIdentChar(text[i])) ++i;
-    } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
-      while (i < text.size() && (IsIdentChar(text[i]) || text[i] == '.')) ++i;
-    } else {
-      ++i;
-    }
-    out.push_back({text.substr(start, i - start), static_cast<uint32_t>(start)});
-  }
-  return out;
-}
-
 const std::set<std::string_view>& ConstructorTypes() {
   static const std::set<std::string_view> types = {"float", "int",   "bool",  "vec2",  "vec3",
                                                    "vec4",  "ivec2", "ivec3", "ivec4", "bvec2",
@@ -78,8 +26,9 @@ const std::set<std::string_view>& ConstructorTypes() {
 }  // namespace
 
 void CheckConstInitializers(const StrictContext& ctx) {
+  if (ctx.version != 110) return;  // 1.20 4.3.3 allows built-in calls; glslang checks the rest
   for (const compiler::SourceFile* file : ctx.sources) {
-    std::vector<Tok> toks = Tokens(file->text());
+    std::vector<Token> toks = Tokenize(file->text());
     std::set<std::string_view> structs;
     for (size_t i = 0; i + 1 < toks.size(); ++i) {
       if (toks[i].text == "struct") structs.insert(toks[i + 1].text);

@@ -133,6 +133,9 @@ class ExpressionRules : public glslang::TIntermTraverser {
 }  // namespace
 
 void CheckExpressions(const StrictContext& ctx) {
+  // 1.20 makes arrays first-class (5.7-5.9) and its grammar takes an assignment_expression
+  // as the third operand of '?:' (chapter 9).
+  if (ctx.version != 110) return;
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;
   ExpressionRules rules(ctx);

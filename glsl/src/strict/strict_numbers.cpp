@@ -15,7 +15,6 @@ namespace arbiter::glsl {
 namespace {
 
 bool IsDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The length of the number token at `at` (digits, '.', an exponent) and whether it is a
 // floating-point literal (it has a '.' or an exponent).

@@ -19,9 +19,6 @@
 namespace arbiter::glsl {
 namespace {
 
-bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 struct Word {
   std::string_view text;
   size_t offset;  // in the line
@@ -45,6 +42,7 @@ std::vector<Word> Words(std::string_view line) {
 }  // namespace
 
 void CheckPreprocessor(const StrictContext& ctx) {
+  std::set<std::string, std::less<>> reserved_reported;  // once per name: at its first use
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const compiler::SourceFile* file = ctx.sources[index];
     const std::string& text = BlankedText(ctx, index);
@@ -66,12 +64,22 @@ void CheckPreprocessor(const StrictContext& ctx) {
         std::vector<Word> words = Words(line.substr(first + 1));
         for (Word& w : words) w.offset += first + 1;
         std::string_view directive = words.empty() ? "" : words[0].text;
-        if ((directive == "define" || directive == "undef") && words.size() > 1 &&
-            words[1].text.find("__") != std::string_view::npos) {
-          report(Diag::ReservedWord, pos + words[1].offset, words[1].text.size(),
-                 fmt::format("macro names containing '__' are reserved (GLSL 1.10 section 3.3); "
-                             "'{}' cannot be {}",
-                             words[1].text, directive == "define" ? "defined" : "undefined"));
+        const bool predefined =
+            words.size() > 1 && (words[1].text == "__LINE__" || words[1].text == "__FILE__" ||
+                                 words[1].text == "__VERSION__");
+        if ((directive == "define" || directive == "undef") && predefined) {
+          // 3.3: #define and #undef are "as is standard for C++ preprocessors", and C++
+          // ([cpp.predefined]) forbids defining or undefining a predefined macro (Mesa agrees).
+          report(Diag::Preprocessor, pos + words[1].offset, words[1].text.size(),
+                 fmt::format("'{}' is a predefined macro: it cannot be {}", words[1].text,
+                             directive == "define" ? "redefined" : "undefined"));
+        } else if ((directive == "define" || directive == "undef") && words.size() > 1 &&
+                   words[1].text.find("__") != std::string_view::npos) {
+          report(Diag::ReservedIdentifier, pos + words[1].offset, words[1].text.size(),
+                 fmt::format("macro names containing '__' are reserved ({} section 3.3); '{}' "
+                             "is {} anyway, as every driver does",
+                             VersionName(ctx), words[1].text,
+                             directive == "define" ? "defined" : "undefined"));
         }
         if (directive == "define" && words.size() > 1) {
           macros.emplace(words[1].text);
@@ -102,11 +110,11 @@ void CheckPreprocessor(const StrictContext& ctx) {
         // possible future keywords" (the predefined macros excepted).
         for (const Word& w : Words(line)) {
           if (IsIdentStart(w.text[0]) && w.text.find("__") != std::string_view::npos &&
-              !macros.count(w.text)) {
-            report(Diag::ReservedWord, pos + w.offset, w.text.size(),
+              !macros.count(w.text) && reserved_reported.emplace(w.text).second) {
+            report(Diag::ReservedIdentifier, pos + w.offset, w.text.size(),
                    fmt::format("identifiers containing '__' are reserved as possible future "
-                               "keywords (GLSL 1.10 section 3.6): '{}'",
-                               w.text));
+                               "keywords ({} section 3.6): '{}'; every driver accepts it",
+                               VersionName(ctx), w.text));
           }
         }
         for (char c : line) {

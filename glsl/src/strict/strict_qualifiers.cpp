@@ -18,10 +18,10 @@ bool IsVarying(const glslang::TQualifier& q, Stage stage) {
                                 : q.storage == glslang::EvqVaryingIn;
 }
 
-// float, vec2..vec4, mat2..mat4 (square), or arrays of these.
-bool IsVaryingType(const glslang::TType& type) {
+// float, vec2..vec4, mat2..mat4 (1.20: any matrix), or arrays of these.
+bool IsVaryingType(const glslang::TType& type, int version) {
   if (type.getBasicType() != glslang::EbtFloat) return false;
-  if (type.isMatrix()) return type.getMatrixCols() == type.getMatrixRows();
+  if (type.isMatrix()) return version >= 120 || type.getMatrixCols() == type.getMatrixRows();
   return true;
 }
 
@@ -88,16 +88,18 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
         std::string callee = RestoreSpelling(finder.call->getName().c_str());
         callee = callee.substr(0, callee.find('('));
         Report(ctx, Diag::GlobalInitializer, finder.call->getLoc(), callee, "=",
-               fmt::format("the initializer of global '{}' calls '{}'; in GLSL 1.10 global "
-                           "initializers must be constant expressions (assign it in main())",
+               fmt::format("the initializer of global '{}' calls '{}'; GLSL 1.10 says global "
+                           "initializers must be constant expressions (1.20 and every driver "
+                           "allow it; assign it in main() to be portable)",
                            name, callee));
         continue;
       }
       if (finder.found == nullptr) continue;
       std::string used = RestoreSpelling(finder.found->getName().c_str());
       Report(ctx, Diag::GlobalInitializer, finder.found->getLoc(), used, "=",
-             fmt::format("the initializer of global '{}' reads {} '{}'; in GLSL 1.10 global "
-                         "initializers must be constant expressions (assign it in main())",
+             fmt::format("the initializer of global '{}' reads {} '{}'; GLSL 1.10 says global "
+                         "initializers must be constant expressions (1.20 and every driver "
+                         "allow it; assign it in main() to be portable)",
                          name, StorageName(finder.found->getQualifier()), used));
     }
   }
@@ -116,13 +118,13 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
       bool attribute =
           ctx.stage == Stage::Vertex && symbol->getQualifier().storage == glslang::EvqVaryingIn;
       if (!attribute && !IsVarying(symbol->getQualifier(), ctx.stage)) continue;
-      if (IsVaryingType(symbol->getType())) continue;
+      if (IsVaryingType(symbol->getType(), ctx.version)) continue;
       std::string name = RestoreSpelling(symbol->getName().c_str());
       std::string_view what = attribute ? "attribute" : "varying";
       Report(ctx, Diag::VaryingType, symbol->getLoc(), name, what,
-             fmt::format("{} '{}' has type '{}'; GLSL 1.10 {}s are float, vec2, vec3, vec4, "
-                         "mat2, mat3 or mat4{}",
-                         what, name, symbol->getType().getBasicTypeString().c_str(), what,
+             fmt::format("{} '{}' has type '{}'; {} {}s are float, vec2, vec3, vec4{}{}", what,
+                         name, symbol->getType().getBasicTypeString().c_str(), VersionName(ctx),
+                         what, ctx.version >= 120 ? " or matrices" : ", mat2, mat3 or mat4",
                          attribute ? "" : ", or arrays of these"));
     }
   }
@@ -134,7 +136,8 @@ void CheckQualifiers(const StrictContext& ctx) {
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;
   CheckVaryingTypes(ctx, root);
-  CheckGlobalInitializers(ctx, root);
+  // 1.20 drops 1.10's "such initializers must have constant type" (4.3).
+  if (ctx.version == 110) CheckGlobalInitializers(ctx, root);
 }
 
 }  // namespace arbiter::glsl

@@ -1,3 +1,4 @@
+// ARGS: --link
 void f();
 void main(){ gl_FragColor = vec4(1.0);
  gl_FragData[0] = vec4(0.0); f(); }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +43,15 @@ struct Diagnostic {
 // every later diagnostic is dropped: errors are counted in dropped(), later warnings and
 // notes are neither stored nor counted (a later PromoteWarnings() counts the warnings as
 // dropped errors). error_count() counts stored errors only.
+// What -W<code>, -Wno-<code> and -Werror=<code> ask of one warning code.
+enum class WarningAction { Default, Off, Error };
+
+// The command line's warning switches: -Werror, and per code.
+struct WarningPolicy {
+  bool werror = false;
+  std::map<std::string, WarningAction, std::less<>> codes;
+};
+
 class DiagnosticSink {
  public:
   explicit DiagnosticSink(int error_limit = 0) : error_limit_(error_limit) {}
@@ -66,6 +76,9 @@ class DiagnosticSink {
   // report order, as if the warnings had been reported as errors: promoted or original
   // errors past the limit are removed and counted in dropped().
   void PromoteWarnings();
+  // Applies -Wno-<code> (the warning is removed), -Werror=<code> and -Werror (promoted), in
+  // report order with the error limit, as PromoteWarnings does.
+  void ApplyWarningPolicy(const WarningPolicy& policy);
 
  private:
   int error_limit_ = 0;

@@ -23,7 +23,12 @@ const std::vector<LimitKey>& LimitKeys();
 
 struct LimitProfile {
   std::string name;
+  // The built-in profile it derives from ("spec-min" or "mesa"; its own name for those).
+  std::string base;
   std::map<std::string, int64_t, std::less<>> values;
+  // The GLSL extensions the target has, when the profile lists them ("extensions" in JSON);
+  // otherwise those of `base` (glsl/src/extensions.def).
+  std::optional<std::vector<std::string>> glsl_extensions;
 
   // The value of a key (every built-in profile defines every key).
   int64_t Get(std::string_view key) const;
@@ -35,8 +40,10 @@ const LimitProfile* BuiltinProfile(std::string_view name);
 std::vector<std::string_view> BuiltinProfileNames();
 
 // Loads `--limits ARG`: a built-in profile name, or a JSON file
-// {"name": "...", "base": "spec-min"|"mesa", "limits": {"arbvp.max_instructions": 256, ...}}
-// whose keys override the base (default base: spec-min). Unknown keys, non-integer or
+// {"name": "...", "base": "spec-min"|"mesa", "limits": {"arbvp.max_instructions": 256, ...},
+//  "extensions": ["GL_ARB_texture_rectangle", ...]}
+// whose keys override the base (default base: spec-min); "extensions", when present, is the
+// whole list of GLSL extensions the target has. Unknown keys, non-integer or
 // negative values are errors: returns nullopt and sets `error`.
 std::optional<LimitProfile> LoadLimitProfile(const std::string& arg, std::string* error);
 

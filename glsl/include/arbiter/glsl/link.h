@@ -9,6 +9,7 @@
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/limits.h"
 #include "arbiter/compiler/source.h"
+#include "arbiter/glsl/check.h"
 #include "arbiter/glsl/reflect.h"
 
 namespace arbiter::glsl {
@@ -19,6 +20,8 @@ struct LinkOptions {
   // an error; a GLSL key it lacks (compiler/src/limits.def has none yet) takes GlslLimits()'
   // Mesa value for the profile "mesa" and the spec minimum for any other.
   const compiler::LimitProfile* profile = nullptr;
+  // How each shader is compiled (extensions, preprocessor options); `link` is implied.
+  CheckOptions check;
 };
 
 struct LinkResult {
@@ -38,6 +41,21 @@ struct LinkResult {
 LinkResult LinkProgram(const std::vector<const compiler::SourceFile*>& vertex,
                        const std::vector<const compiler::SourceFile*>& fragment,
                        const LinkOptions& options, compiler::DiagnosticSink* sink);
+
+// One shader object of a program: the strings of one glShaderSource, in order.
+struct ShaderObject {
+  Stage stage;
+  std::vector<const compiler::SourceFile*> strings;
+};
+
+// Checks shader objects of one or both stages as one program, as glLinkProgram judges it: each
+// object compiled (CheckShader), then linked. A stage may have several objects: main() and
+// every called function must be defined in one of them (glslang merges the stage's objects).
+// With one object of each stage the program gets LinkProgram's cross-stage rules; with more
+// objects of a stage, glslang's link of the merged stage decides. `objects` must be
+// non-empty. Thread-safe.
+bool LinkShaders(const std::vector<ShaderObject>& objects, const LinkOptions& options,
+                 compiler::DiagnosticSink* sink);
 
 // One implementation limit of GLSL programs, keyed like compiler/src/limits.def.
 struct GlslLimit {

@@ -1,7 +1,9 @@
 // [config]
-// expect_result: fail
+// expect_result: pass
 // glsl_version: 1.10
 // [end config]
+// Accepted with the warning glsl-reserved-identifier: the name is reserved, and every driver
+// (Mesa, glslang) accepts it (docs/glsl-disagreements.md).
 // 3.6 "In addition, all identifiers containing two consecutive underscores (__) are reserved as possible future keywords."
 float get__value()
 {

@@ -1,0 +1,96 @@
+// The GLSL options of check, info and link: -D, -U, -I, --preamble, and the warning switches.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "arbiter/arbvp/check.h"
+#include "arbiter/glsl/check.h"
+#include "cli.h"
+
+namespace arbiter::cli {
+namespace {
+
+// Every diagnostic code arbiter has (ARB and GLSL), for the warning switches.
+const std::set<std::string_view>& KnownCodes() {
+  static const std::set<std::string_view> codes = [] {
+    std::set<std::string_view> all;
+    for (const compiler::DiagnosticInfo* info : arbvp::AllDiagnostics()) all.insert(info->code);
+    for (const compiler::DiagnosticInfo* info : glsl::AllDiagnostics()) all.insert(info->code);
+    return all;
+  }();
+  return codes;
+}
+
+// -W<code> (the warning stays on), -Wno-<code> (off), -Werror=<code> (an error).
+bool ParseWarningSwitch(const std::string& value, compiler::WarningPolicy* policy) {
+  std::string_view code = value;
+  compiler::WarningAction action = compiler::WarningAction::Default;
+  if (code.substr(0, 3) == "no-") {
+    code.remove_prefix(3);
+    action = compiler::WarningAction::Off;
+  } else if (code.substr(0, 6) == "error=") {
+    code.remove_prefix(6);
+    action = compiler::WarningAction::Error;
+  }
+  if (KnownCodes().count(code) == 0) {
+    fmt::print(stderr,
+               "arbiter: error: -W{}: unknown diagnostic code '{}' (docs/diagnostics.md lists "
+               "them)\n",
+               value, code);
+    return false;
+  }
+  policy->codes[std::string(code)] = action;
+  return true;
+}
+
+}  // namespace
+
+void AddGlslOptions(CLI::App* app, CommonOptions* options) {
+  app->add_option("-D,--define", options->defines,
+                  "GLSL: define a macro before the shader (NAME or NAME=VALUE); repeatable")
+      ->allow_extra_args(false);
+  app->add_option("-U,--undefine", options->undefines,
+                  "GLSL: undefine a macro -D defined; repeatable")
+      ->allow_extra_args(false);
+  app->add_option("-I,--include-dir", options->include_dirs,
+                  "GLSL: where #include looks (GL_ARB_shading_language_include); repeatable")
+      ->allow_extra_args(false);
+  app->add_option("--preamble", options->preamble,
+                  "GLSL: a file of text the application puts after #version");
+  app->add_option("--warning", options->warnings,
+                  "-W<code>, -Wno-<code>, -Werror=<code>: switch one warning")
+      ->allow_extra_args(false);
+}
+
+std::optional<Exit> ResolveGlslSetup(const CommonOptions& options, GlslSetup* out) {
+  if (!ResolveLimits(options, &out->profile)) return Exit::Usage;
+  out->check.profile = out->profile ? &*out->profile : nullptr;
+  out->check.link = false;
+  for (const std::string& d : options.defines) {
+    if (d.empty() || !(std::isalpha(static_cast<unsigned char>(d[0])) || d[0] == '_')) {
+      fmt::print(stderr, "arbiter: error: -D {}: a macro name must start with a letter or '_'\n",
+                 d);
+      return Exit::Usage;
+    }
+    out->check.preprocessor.defines.push_back(d);
+  }
+  for (const std::string& u : options.undefines) out->check.preprocessor.defines.push_back("-" + u);
+  out->check.preprocessor.include_dirs = options.include_dirs;
+  if (!options.preamble.empty()) {
+    std::string bytes;
+    std::string error;
+    if (!compiler::ReadFileBytes(options.preamble, &bytes, &error)) {
+      fmt::print(stderr, "arbiter: error: --preamble {}: {}\n", options.preamble, error);
+      return Exit::Environment;
+    }
+    out->preamble = std::make_unique<compiler::SourceFile>(options.preamble, std::move(bytes));
+    out->check.preprocessor.preamble = out->preamble.get();
+  }
+  out->warnings.werror = options.werror;
+  for (const std::string& w : options.warnings) {
+    if (!ParseWarningSwitch(w, &out->warnings)) return Exit::Usage;
+  }
+  return std::nullopt;
+}
+
+}  // namespace arbiter::cli

@@ -1,0 +1,3 @@
+#version 130
+in vec4 position;
+void main() { gl_Position = position; }
