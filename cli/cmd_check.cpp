@@ -15,6 +15,7 @@ namespace {
 struct Checked {
   compiler::FileReport report;
   std::unique_ptr<compiler::SourceFile> source;
+  std::vector<std::unique_ptr<compiler::SourceFile>> included;  // files #include read
   Exit exit = Exit::Ok;
   std::string text;  // the report rendered as text, when that is the format
 };
@@ -35,7 +36,7 @@ Checked CheckOne(const Input& input, const CommonOptions& options,
   }
   compiler::DiagnosticSink sink(options.error_limit);
   if (std::optional<glsl::Stage> stage = GlslStage(options, input)) {
-    glsl::CheckShader(*stage, {out.source.get()}, glsl_setup.check, &sink);
+    out.included = glsl::CheckShader(*stage, {out.source.get()}, glsl_setup.check, &sink).included;
   } else if (options.stage.empty() && glsl::IsGlslPath(input.path)) {
     sink.Report(kGlslStageUnknown, nullptr, {0, 0},
                 fmt::format("cannot tell the stage of '{}': name it NAME.vert.glsl or "
@@ -78,8 +79,10 @@ Checked CheckOneShader(const std::vector<Input>& inputs, const CommonOptions& op
   compiler::DiagnosticSink sink(options.error_limit);
   glsl::CheckOptions check = glsl_setup.check;
   check.link = options.link;
-  glsl::CheckShader(options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment, strings,
-                    check, &sink);
+  out.included =
+      glsl::CheckShader(options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment,
+                        strings, check, &sink)
+          .included;
   sink.ApplyWarningPolicy(glsl_setup.warnings);
   if (sink.error_count() > 0) out.exit = Exit::Rejected;
   out.report.diagnostics = std::move(sink.diagnostics());

@@ -62,7 +62,7 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   PreparedShader prepared = PrepareShader(stage, sources, options, sink);
   if (!prepared.checked) return result;
   bool compiled = false;
-  std::unique_ptr<glslang::TShader> shader = ParsePrepared(stage, prepared, &compiled);
+  std::unique_ptr<glslang::TShader> shader = ParsePrepared(stage, &prepared, &compiled);
   InfoLogContext log{prepared.files, stage, prepared.version, options.link, &prepared};
   int relaxed = ReportInfoLog(shader->getInfoLog(), log, /*link=*/false, sink);
   // Only errors that the shader's version does not make (see info_log.cpp): glslang recovered
@@ -74,6 +74,7 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
   FragmentOutputWrites fragment_writes;
   StrictContext ctx{stage,
                     prepared.version,
+                    prepared.gpu4(),
                     prepared.files,
                     sink,
                     *shader->getIntermediate(),
@@ -109,6 +110,7 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
                  "glslang rejected the shader without a message");
   }
   result.ok = Errors(*sink) == errors_before;
+  result.included = std::move(prepared.included);
   return result;
 }
 

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "diag.h"
+#include "prepare.h"
 #include "scan.h"
 #include "source_text.h"
 
@@ -253,6 +254,9 @@ const Relaxation* Relaxed(std::string_view body, const InfoLogContext& ctx, bool
 // Returns false when the message was dropped by a relaxation.
 bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::DiagnosticSink* sink) {
   const std::vector<const SourceFile*>& sources = ctx.sources;
+  // Deprecations of 1.30 come from parsing an EXT_gpu_shader4 shader as 1.30 (prepare.h):
+  // nothing of 1.10 or 1.20 is deprecated.
+  if (m.warning && m.body.find("deprecated in version") != std::string::npos) return true;
   const Relaxation* relaxed = m.warning ? nullptr : Relaxed(m.body, ctx, link);
   if (relaxed != nullptr && relaxed->warning == Diag::CompileError) return false;
   // glslang's messages name the words source_text.cpp renamed as it saw them.
@@ -274,8 +278,28 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
         return std::isdigit(static_cast<unsigned char>(c));
       });
     };
-    if (colon2 != std::string_view::npos && all_digits(body.substr(0, colon)) &&
+    // "-1:<line>:": the preamble (prepare.h): the --preamble file after arbiter's own lines.
+    if (colon2 != std::string_view::npos && body.substr(0, colon) == "-1" &&
         all_digits(body.substr(colon + 1, colon2 - colon - 1))) {
+      auto preamble_line = static_cast<uint32_t>(
+          std::stoul(std::string(body.substr(colon + 1, colon2 - colon - 1))));
+      const PreparedShader* prepared = ctx.prepared;
+      if (prepared != nullptr && prepared->preamble_file != nullptr &&
+          preamble_line > prepared->preamble_generated_lines) {
+        file = prepared->preamble_file;
+        line = preamble_line - prepared->preamble_generated_lines;
+      }
+      body = Trim(body.substr(colon2 + 1));
+    } else if (colon2 != std::string_view::npos && ctx.prepared != nullptr &&
+               IncludedFile(*ctx.prepared, body.substr(0, colon)) != nullptr &&
+               all_digits(body.substr(colon + 1, colon2 - colon - 1))) {
+      // "<path>:<line>:": a file #include read.
+      file = IncludedFile(*ctx.prepared, body.substr(0, colon));
+      line = static_cast<uint32_t>(
+          std::stoul(std::string(body.substr(colon + 1, colon2 - colon - 1))));
+      body = Trim(body.substr(colon2 + 1));
+    } else if (colon2 != std::string_view::npos && all_digits(body.substr(0, colon)) &&
+               all_digits(body.substr(colon + 1, colon2 - colon - 1))) {
       size_t string = std::stoul(std::string(body.substr(0, colon)));
       if (string < sources.size()) file = sources[string];
       line = static_cast<uint32_t>(
@@ -302,6 +326,18 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   // glslang's warning about "__" names is reported as an error by the strictness layer.
   if (m.warning && diag == Diag::ReservedWord) return true;
   std::string message = CleanText(text);
+  // #include is glslang's under its own extension's name; arbiter's is the ARB one.
+  constexpr std::string_view kGoogleInclude =
+      "required extension not requested: GL_GOOGLE_include_directive";
+  constexpr std::string_view kNotFound = "Could not process include directive for header name: ";
+  if (message.find(kGoogleInclude) != std::string::npos) {
+    message = "#include needs '#extension GL_ARB_shading_language_include : enable' (or require)";
+  } else if (message.compare(0, kNotFound.size(), kNotFound) == 0) {
+    message = fmt::format(
+        "cannot find the #include file '{}' (looked next to the including file, then in each -I "
+        "directory)",
+        message.substr(kNotFound.size()));
+  }
   // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
   if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
       std::islower(static_cast<unsigned char>(message[1]))) {

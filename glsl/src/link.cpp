@@ -315,7 +315,7 @@ bool LinkShaders(const std::vector<ShaderObject>& objects, const LinkOptions& op
     compiler::DiagnosticSink scratch(0);
     PreparedShader prepared = PrepareShader(object.stage, object.strings, check, &scratch);
     bool parsed = false;
-    shaders.push_back(ParsePrepared(object.stage, prepared, &parsed));
+    shaders.push_back(ParsePrepared(object.stage, &prepared, &parsed));
     program.addShader(shaders.back().get());
     all.insert(all.end(), object.strings.begin(), object.strings.end());
   }

@@ -10,6 +10,7 @@
 #include "charset.h"
 #include "diag.h"
 #include "extensions.h"
+#include "gpu4_preamble.h"
 #include "scan.h"
 #include "source_text.h"
 
@@ -73,6 +74,7 @@ void ReadVersion(const SourceFile& file, const std::vector<Directive>& directive
     const bool known = digits == "110" || digits == "120";
     if (known && first && d.before_code) {
       out->version = digits == "120" ? 120 : 110;
+      out->version_offset = number.offset;
       return;
     }
     if (known) return;  // too late: glslang says "must occur first"
@@ -138,11 +140,29 @@ void ReadExtensions(const SourceFile& file, const std::vector<Directive>& direct
         break;
       case ExtensionSupport::Include:
         Blank(text, d.hash, d.end);
+        if (wanted) out->include = true;
         break;
       case ExtensionSupport::Gpu4:
         Blank(text, d.hash, d.end);
-        if (wanted) out->gpu4 = true;
+        if (wanted && name == "GL_EXT_gpu_shader4") out->gpu_shader4 = true;
+        if (wanted && name == "GL_EXT_texture_array") out->texture_array = true;
         break;
+    }
+  }
+}
+
+// GLSL 1.30 spellings of EXT_gpu_shader4's words, same length: "unsigned int" is "uint", and
+// a fragment shader's "varying out" is "out" (1.30 takes neither).
+void RewriteGpu4Words(Stage stage, std::string* text) {
+  const std::vector<Token> tokens = Tokenize(*text);
+  for (size_t i = 0; i + 1 < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    const Token& next = tokens[i + 1];
+    if (t.text == "unsigned" && next.text == "int") {
+      text->replace(t.offset, t.text.size(), "uint    ");
+      Blank(text, next.offset, next.offset + next.text.size());
+    } else if (stage == Stage::Fragment && t.text == "varying" && next.text == "out") {
+      Blank(text, t.offset, t.offset + t.text.size());
     }
   }
 }
@@ -173,7 +193,6 @@ void EnsureGlslang() {
 
 PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& sources,
                              const CheckOptions& options, compiler::DiagnosticSink* sink) {
-  (void)stage;
   PreparedShader out;
   out.files = sources;
   for (size_t i = 0; i < sources.size(); ++i) {
@@ -193,23 +212,101 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
   // ARB_texture_rectangle: "the compiler behaves as if #extension GL_ARB_texture_rectangle :
   // require" is present, where the implementation supports the extension.
   const Extension* rectangle = FindExtension("GL_ARB_texture_rectangle");
-  if (rectangle != nullptr && ProfileHas(options.profile, *rectangle)) {
-    out.preamble += "#extension GL_ARB_texture_rectangle : enable\n";
+  const bool has_rectangle = rectangle != nullptr && ProfileHas(options.profile, *rectangle);
+  if (has_rectangle) out.preamble += "#extension GL_ARB_texture_rectangle : enable\n";
+  // 3.3: each supported extension defines a macro of its name; glslang defines those it knows.
+  for (const Extension& e : KnownExtensions()) {
+    if (e.support != ExtensionSupport::Native && ProfileHas(options.profile, e)) {
+      out.preamble += fmt::format("#define {} 1\n", e.name);
+    }
+  }
+  if (out.gpu4()) {
+    if (out.version_offset != std::string::npos) {
+      out.texts.front().replace(out.version_offset, 3, "130");
+    }
+    for (std::string& text : out.texts) RewriteGpu4Words(stage, &text);
+    out.preamble +=
+        Gpu4Preamble(stage == Stage::Vertex, out.gpu_shader4, out.texture_array, has_rectangle);
+  }
+  if (out.include) {
+    // glslang reads #include (and #line with a file name) under its own extension's name.
+    out.preamble += "#extension GL_GOOGLE_include_directive : enable\n";
+    out.include_dirs = options.preprocessor.include_dirs;
   }
   out.preamble += DefineLines(options.preprocessor.defines);
   for (char c : out.preamble) out.preamble_generated_lines += c == '\n';
   if (options.preprocessor.preamble != nullptr) {
+    out.preamble_file = options.preprocessor.preamble;
     out.preamble += PrepareForGlslang(options.preprocessor.preamble->text());
     if (!out.preamble.empty() && out.preamble.back() != '\n') out.preamble += '\n';
   }
   return out;
 }
 
-std::unique_ptr<glslang::TShader> ParsePrepared(Stage stage, const PreparedShader& prepared,
+namespace {
+
+// ARB_shading_language_include on files: a name is looked up from the including file's
+// directory, then in each -I directory ("/a/b.glsl" is relative to those roots).
+class FileIncluder : public glslang::TShader::Includer {
+ public:
+  explicit FileIncluder(PreparedShader* prepared) : prepared_(prepared) {}
+
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+    std::string name(header);
+    if (!name.empty() && name.front() != '/') {
+      const SourceFile* from = IncludedFile(*prepared_, includer);
+      if (from == nullptr) from = prepared_->files.front();
+      if (IncludeResult* r = Open(DirectoryOf(from->path()) + name)) return r;
+    }
+    return includeSystem(header, includer, 0);
+  }
+
+  IncludeResult* includeSystem(const char* header, const char*, size_t) override {
+    std::string name(header);
+    while (!name.empty() && name.front() == '/') name.erase(0, 1);
+    for (const std::string& dir : prepared_->include_dirs) {
+      std::string path = dir.empty() || dir.back() == '/' ? dir + name : dir + "/" + name;
+      if (IncludeResult* r = Open(path)) return r;
+    }
+    return nullptr;
+  }
+
+  void releaseInclude(IncludeResult* result) override { delete result; }
+
+ private:
+  static std::string DirectoryOf(const std::string& path) {
+    size_t slash = path.rfind('/');
+    return slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  }
+
+  IncludeResult* Open(const std::string& path) {
+    std::string bytes;
+    std::string error;
+    if (!compiler::ReadFileBytes(path, &bytes, &error)) return nullptr;
+    auto file = std::make_unique<SourceFile>(path, std::move(bytes));
+    const SourceFile* kept = file.get();
+    prepared_->included.push_back(std::move(file));
+    // glslang keeps the pointer until the string is read; the file lives in `prepared`.
+    return new IncludeResult(path, kept->text().data(), kept->text().size(), nullptr);
+  }
+
+  PreparedShader* prepared_;
+};
+
+}  // namespace
+
+const SourceFile* IncludedFile(const PreparedShader& prepared, std::string_view name) {
+  for (const auto& file : prepared.included) {
+    if (file->path() == name) return file.get();
+  }
+  return nullptr;
+}
+
+std::unique_ptr<glslang::TShader> ParsePrepared(Stage stage, PreparedShader* prepared,
                                                 bool* parsed) {
   std::vector<const char*> strings;
   std::vector<int> lengths;
-  for (const std::string& text : prepared.texts) {
+  for (const std::string& text : prepared->texts) {
     strings.push_back(text.data());
     lengths.push_back(static_cast<int>(text.size()));
   }
@@ -218,10 +315,12 @@ std::unique_ptr<glslang::TShader> ParsePrepared(Stage stage, const PreparedShade
   // No names: glslang would then expand __FILE__ to a file name, where GLSL 1.10 (3.3) says
   // it is the source string number. Messages say "<string>:<line>:".
   shader->setStringsWithLengths(strings.data(), lengths.data(), static_cast<int>(strings.size()));
-  if (!prepared.preamble.empty()) shader->setPreamble(prepared.preamble.c_str());
+  if (!prepared->preamble.empty()) shader->setPreamble(prepared->preamble.c_str());
+  FileIncluder includer(prepared);
   // A shader without #version is 1.10 desktop (without a default glslang would take such a
-  // shader as ES 1.00).
-  *parsed = shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, kMessages);
+  // shader as ES 1.00); EXT_gpu_shader4 and EXT_texture_array: 1.30 (PreparedShader::gpu4).
+  *parsed = shader->parse(GetDefaultResources(), prepared->gpu4() ? 130 : 110, ENoProfile, false,
+                          false, kMessages, includer);
   return shader;
 }
 

@@ -23,18 +23,29 @@ struct PreparedShader {
   int version = 110;
   // false: the shader's #version is one arbiter does not check (reported); nothing more to do.
   bool checked = true;
-  // An extension of the Gpu4 kind is enabled: glslang parses the shader as GLSL 1.30 with the
-  // extension's names mapped onto 1.30's (extensions.def).
-  bool gpu4 = false;
+  // GL_EXT_gpu_shader4 or GL_EXT_texture_array is enabled: glslang parses the shader as GLSL
+  // 1.30, with the extensions' functions defined in the preamble (gpu4_preamble.h) and their
+  // spellings of 1.30 words rewritten ("unsigned int", "varying out").
+  bool gpu_shader4 = false;
+  bool texture_array = false;
+  bool gpu4() const { return gpu_shader4 || texture_array; }
+  // Where the number of the shader's #version is in texts[0]; npos without one.
+  size_t version_offset = std::string::npos;
   // The strings glslang parses, one per source, each with the user's lines and columns.
   std::vector<std::string> texts;
-  // The files of the strings: the sources, then the files #include brought in (owned here).
+  // The files of the strings (the sources), and those #include brought in while parsing (owned
+  // here; diagnostics in them name them).
   std::vector<const compiler::SourceFile*> files;
   std::vector<std::unique_ptr<compiler::SourceFile>> included;
-  // glslang's preamble (placed after #version), and the file it comes from, if any.
+  // GL_ARB_shading_language_include is enabled: #include is read (glslang's include
+  // directive), from the including file's directory and then `include_dirs`.
+  bool include = false;
+  std::vector<std::string> include_dirs;
+  // glslang's preamble (placed after #version): arbiter's lines, then --preamble's file.
   std::string preamble;
-  // Lines of `preamble` before the text of --preamble's file.
-  int preamble_generated_lines = 0;
+  // Lines of `preamble` before the text of --preamble's file, and that file (or nullptr).
+  uint32_t preamble_generated_lines = 0;
+  const compiler::SourceFile* preamble_file = nullptr;
 };
 
 // Reads the directives of `sources` (one shader's strings), reporting what is wrong with them
@@ -43,9 +54,12 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const compiler::Sour
                              const CheckOptions& options, compiler::DiagnosticSink* sink);
 
 // A glslang shader of `stage` parsed from `prepared`; `parsed` says whether glslang accepted it.
-// glslang must be initialised (EnsureGlslang).
-std::unique_ptr<glslang::TShader> ParsePrepared(Stage stage, const PreparedShader& prepared,
+// The files #include read are added to prepared->included.
+std::unique_ptr<glslang::TShader> ParsePrepared(Stage stage, PreparedShader* prepared,
                                                 bool* parsed);
+
+// The included file a glslang location names ("dir/common.glsl"), or nullptr.
+const compiler::SourceFile* IncludedFile(const PreparedShader& prepared, std::string_view name);
 
 // glslang::InitializeProcess, once per process.
 void EnsureGlslang();

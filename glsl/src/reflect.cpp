@@ -562,7 +562,7 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment,
       continue;
     }
     bool parsed = false;
-    auto shader = ParsePrepared(stage, prepared, &parsed);
+    auto shader = ParsePrepared(stage, &prepared, &parsed);
     InfoLogContext log{sources, stage, prepared.version, /*program=*/true, nullptr};
     parsed_[Index(stage)] = parsed || OnlyRelaxedErrors(shader->getInfoLog(), log, /*link=*/false);
     if (parsed_[Index(stage)]) {

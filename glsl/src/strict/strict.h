@@ -30,6 +30,7 @@ struct FragmentOutputWrites {
 struct StrictContext {
   Stage stage;
   int version;  // 110 or 120 (prepare.h)
+  bool gpu4;    // EXT_gpu_shader4 or EXT_texture_array enabled: glslang parsed it as 1.30
   const std::vector<const compiler::SourceFile*>& sources;
   compiler::DiagnosticSink* sink;
   const glslang::TIntermediate& ast;  // the compiled shader

@@ -135,7 +135,8 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
 void CheckQualifiers(const StrictContext& ctx) {
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;
-  CheckVaryingTypes(ctx, root);
+  // EXT_gpu_shader4 allows flat integer varyings; glslang's 1.30 rules check them.
+  if (!ctx.gpu4) CheckVaryingTypes(ctx, root);
   // 1.20 drops 1.10's "such initializers must have constant type" (4.3).
   if (ctx.version == 110) CheckGlobalInitializers(ctx, root);
 }

@@ -2,6 +2,7 @@
 // arbiter's own rules of each version where glslang and the specification disagree.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,8 @@ struct CheckOptions {
 
 struct CheckResult {
   bool ok = false;  // no errors
+  // The files #include read: diagnostics may point into them, so they must outlive those.
+  std::vector<std::unique_ptr<compiler::SourceFile>> included;
 };
 
 // Compiles (and with `link`, links) the sources as one shader of `stage`: several files are
