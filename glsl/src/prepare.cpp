@@ -227,6 +227,13 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
     for (std::string& text : out.texts) RewriteGpu4Words(stage, &text);
     out.preamble +=
         Gpu4Preamble(stage == Stage::Vertex, out.gpu_shader4, out.texture_array, has_rectangle);
+    if (out.gpu_shader4) {
+      // The built-in variables glslang's 1.30 lacks: the vertex shader's gl_InstanceID (1.40)
+      // and the fragment shader's gl_PrimitiveID (1.50): read-only ints, whose values a check
+      // never needs.
+      out.preamble += stage == Stage::Vertex ? "#define gl_InstanceID (int(0))\n"
+                                             : "#define gl_PrimitiveID (int(0))\n";
+    }
   }
   if (out.include) {
     // glslang reads #include (and #line with a file name) under its own extension's name.
