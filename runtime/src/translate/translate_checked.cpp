@@ -62,7 +62,7 @@ void SelfCheckTranslation(CheckedTranslation* translation) {
     if (s.file->text().empty()) continue;
     compiler::DiagnosticSink sink(0);
     glsl::CheckOptions check;
-    check.link_as_program = s.stage == glsl::Stage::Vertex && vertex;
+    check.link = true;  // a translation is a whole program stage
     if (!glsl::CheckShader(s.stage, {s.file}, check, &sink).ok) {
       out.error = fmt::format("the GLSL {} shader does not compile: {}", s.name, FirstError(sink));
       return;
