@@ -174,7 +174,8 @@ struct InfoOutput {
 };
 
 // Reflects the inputs as one GLSL shader of `stage` (several files: its strings, in order).
-void InfoShader(glsl::Stage stage, const std::vector<Input>& inputs, InfoOutput* out) {
+void InfoShader(glsl::Stage stage, const std::vector<Input>& inputs,
+                const glsl::CheckOptions& glsl_check, InfoOutput* out) {
   compiler::FileReport report;
   report.path = inputs.front().display_path;
   std::vector<const compiler::SourceFile*> strings;
@@ -192,7 +193,7 @@ void InfoShader(glsl::Stage stage, const std::vector<Input>& inputs, InfoOutput*
     return;
   }
   compiler::DiagnosticSink sink;
-  glsl::Reflection reflection = glsl::ReflectShader(stage, strings, &sink);
+  glsl::Reflection reflection = glsl::ReflectShader(stage, strings, &sink, glsl_check);
   if (!reflection.ok) {
     out->exit = Worse(out->exit, Exit::Rejected);
     report.diagnostics = std::move(sink.diagnostics());
@@ -206,11 +207,13 @@ void InfoShader(glsl::Stage stage, const std::vector<Input>& inputs, InfoOutput*
 }  // namespace
 
 int RunInfo(const CommonOptions& options) {
-  std::optional<compiler::LimitProfile> profile;
-  std::optional<arbvp::ProgramKind> stage;
-  if (!ResolveLimits(options, &profile) || !ResolveStage(options, &stage)) {
-    return static_cast<int>(Exit::Usage);
+  GlslSetup glsl_setup;
+  if (std::optional<Exit> failed = ResolveGlslSetup(options, &glsl_setup)) {
+    return static_cast<int>(*failed);
   }
+  const std::optional<compiler::LimitProfile>& profile = glsl_setup.profile;
+  std::optional<arbvp::ProgramKind> stage;
+  if (!ResolveStage(options, &stage)) return static_cast<int>(Exit::Usage);
   arbvp::CheckOptions check_options;
   check_options.profile = profile ? &*profile : nullptr;
   check_options.expected_kind = stage;
@@ -221,13 +224,13 @@ int RunInfo(const CommonOptions& options) {
     // The files are the strings of one shader, as for check.
     if (!inputs.empty()) {
       InfoShader(options.stage == "vert" ? glsl::Stage::Vertex : glsl::Stage::Fragment, inputs,
-                 &out);
+                 glsl_setup.check, &out);
     }
     inputs.clear();
   }
   for (const Input& input : inputs) {
     if (std::optional<glsl::Stage> glsl_stage = GlslStage(options, input)) {
-      InfoShader(*glsl_stage, {input}, &out);
+      InfoShader(*glsl_stage, {input}, glsl_setup.check, &out);
       continue;
     }
     compiler::FileReport report;

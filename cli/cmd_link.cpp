@@ -1,4 +1,4 @@
-// arbiter link: a GLSL vertex shader and fragment shader checked as one program.
+// arbiter link: GLSL shader objects of one or both stages checked as one program.
 #include <fmt/format.h>
 
 #include <functional>
@@ -41,43 +41,54 @@ void ReadStage(const std::vector<Input>& inputs, std::vector<const compiler::Sou
 
 int RunLink(const LinkCommandOptions& options) {
   const CommonOptions& common = options.common;
-  std::optional<compiler::LimitProfile> profile;
-  if (!ResolveLimits(common, &profile)) return static_cast<int>(Exit::Usage);
-  std::vector<Input> vert;
-  std::vector<Input> frag;
-  for (const std::string& path : options.vert) vert.push_back(MakeInput(path));
-  for (const std::string& path : options.frag) frag.push_back(MakeInput(path));
+  GlslSetup glsl_setup;
+  if (std::optional<Exit> failed = ResolveGlslSetup(common, &glsl_setup)) {
+    return static_cast<int>(*failed);
+  }
+  // Each named file is one shader object; --vert and --frag give one object of many strings.
+  struct Object {
+    glsl::Stage stage;
+    std::vector<Input> strings;
+  };
+  std::vector<Object> objects;
+  if (!options.vert.empty()) objects.push_back({glsl::Stage::Vertex, {}});
+  for (const std::string& path : options.vert) objects.back().strings.push_back(MakeInput(path));
+  if (!options.frag.empty()) objects.push_back({glsl::Stage::Fragment, {}});
+  for (const std::string& path : options.frag) objects.back().strings.push_back(MakeInput(path));
   for (const std::string& path : options.files) {
     std::optional<glsl::Stage> stage = glsl::StageFromPath(path);
     if (!stage) {
       fmt::print(stderr,
-                 "arbiter: error: cannot tell the stage of '{}' from its extension (.vert .vs "
-                 ".frag .fs); name it with --vert FILE or --frag FILE\n",
+                 "arbiter: error: cannot tell the stage of '{}' from its name (.vert .vs .vsh "
+                 ".vert.glsl, .frag .fs .fsh .frag.glsl); name it with --vert FILE or --frag "
+                 "FILE\n",
                  path);
       return static_cast<int>(Exit::Usage);
     }
-    (*stage == glsl::Stage::Vertex ? vert : frag).push_back(MakeInput(path));
+    objects.push_back({*stage, {MakeInput(path)}});
   }
-  if (vert.empty() || frag.empty()) {
+  if (objects.empty()) {
     fmt::print(stderr,
-               "arbiter: error: link needs a vertex shader and a fragment shader (VERT "
-               "FRAG, or --vert FILE... --frag FILE...)\n");
+               "arbiter: error: link needs shaders: VERT FRAG, any shader objects of one or both "
+               "stages, or --vert FILE... --frag FILE...\n");
     return static_cast<int>(Exit::Usage);
   }
 
   Exit exit = Exit::Ok;
   std::vector<compiler::FileReport> reports;
   std::vector<std::unique_ptr<compiler::SourceFile>> keep;
-  std::vector<const compiler::SourceFile*> vert_sources;
-  std::vector<const compiler::SourceFile*> frag_sources;
-  ReadStage(vert, &vert_sources, &keep, &reports, &exit);
-  ReadStage(frag, &frag_sources, &keep, &reports, &exit);
+  std::vector<glsl::ShaderObject> shader_objects;
+  for (const Object& object : objects) {
+    shader_objects.push_back({object.stage, {}});
+    ReadStage(object.strings, &shader_objects.back().strings, &keep, &reports, &exit);
+  }
   if (exit == Exit::Ok) {
     compiler::DiagnosticSink sink(common.error_limit);
     glsl::LinkOptions link_options;
-    link_options.profile = profile ? &*profile : nullptr;
-    glsl::LinkProgram(vert_sources, frag_sources, link_options, &sink);
-    if (common.werror) sink.PromoteWarnings();
+    link_options.profile = glsl_setup.check.profile;
+    link_options.check = glsl_setup.check;
+    glsl::LinkShaders(shader_objects, link_options, &sink);
+    sink.ApplyWarningPolicy(glsl_setup.warnings);
     if (sink.error_count() + sink.dropped() > 0) exit = Exit::Rejected;
     DistributeDiagnostics(&sink, keep, &reports);
   }
@@ -92,10 +103,11 @@ int RunLink(const LinkCommandOptions& options) {
 std::function<int()> AddLinkCommand(CLI::App* app) {
   auto options = std::make_shared<LinkCommandOptions>();
   CLI::App* link =
-      app->add_subcommand("link", "check a GLSL vertex shader and fragment shader as one program");
+      app->add_subcommand("link", "check GLSL shaders (vertex, fragment or both) as one program");
   link->add_option("files", options->files,
-                   "VERT FRAG: shader files, stages from their extensions (.vert .vs .frag .fs; "
-                   "'-' needs --vert or --frag)");
+                   "shader objects of one or both stages, each file one object, stages from "
+                   "their names (.vert .vs .vsh .frag .fs .fsh, .vert.glsl .frag.glsl; '-' "
+                   "needs --vert or --frag)");
   link->add_option("--vert", options->vert, "the vertex shader's files, in order (one shader)");
   link->add_option("--frag", options->frag, "the fragment shader's files, in order (one shader)");
   CommonOptions& common = options->common;
@@ -110,6 +122,7 @@ std::function<int()> AddLinkCommand(CLI::App* app) {
                    "stop reporting errors after N (0: no limit)")
       ->check(CLI::NonNegativeNumber);
   link->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
+  AddGlslOptions(link, &common);
   return [options] { return RunLink(*options); };
 }
 

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   CLI::App* info =
       app.add_subcommand("info", "statistics and reflection of ARB programs and GLSL shaders");
   arbiter::cli::AddCommonOptions(info, &info_options, /*diagnostics=*/false);
+  arbiter::cli::AddGlslOptions(info, &info_options);
 
   std::function<int()> run_link = arbiter::cli::AddLinkCommand(&app);
   std::function<int()> run_translate = arbiter::cli::AddTranslateCommand(&app);

@@ -50,10 +50,12 @@ _arbiter() {
                --driver-check --driver"
       files="$arb|$glsl" formats="text json sarif" stages="arbvp arbfp vert frag" ;;
     info)
-      options="-h --help --format --color --limits --stage"
+      options="-h --help --format --color --limits --stage -D --define -U --undefine
+               -I --include-dir --preamble --warning"
       files="$arb|$glsl" formats="text json" stages="arbvp arbfp vert frag" ;;
     link)
-      options="-h --help --vert --frag --format --color --limits --error-limit -W --Werror"
+      options="-h --help --vert --frag --format --color --limits --error-limit -W --Werror
+               -D --define -U --undefine -I --include-dir --preamble --warning"
       files="$glsl" formats="text json sarif" ;;
     translate)
       options="-h --help -o --output --bindings --pair --no-comments --stage --limits --color

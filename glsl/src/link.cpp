@@ -256,7 +256,7 @@ LinkResult LinkProgram(const Sources& vertex, const Sources& fragment, const Lin
   bool vertex_ok = CheckShader(Stage::Vertex, vertex, check, sink).ok;
   bool fragment_ok = CheckShader(Stage::Fragment, fragment, check, sink).ok;
 
-  CompiledProgram program(vertex, fragment, check.profile);
+  CompiledProgram program(vertex, fragment, &check);
   result.vertex.ok = program.Reflect(Stage::Vertex, &result.vertex);
   result.fragment.ok = program.Reflect(Stage::Fragment, &result.fragment);
   if (result.vertex.ok && result.fragment.ok) {

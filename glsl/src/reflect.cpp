@@ -543,8 +543,9 @@ bool DefinesMain(TIntermNode* root) {
 // ---- CompiledProgram ------------------------------------------------------------------------
 
 CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment,
-                                 const compiler::LimitProfile* profile)
-    : sources_{vertex, fragment}, profile_(profile) {
+                                 const CheckOptions* options)
+    : sources_{vertex, fragment} {
+  if (options != nullptr) options_ = *options;
   program_ = std::make_unique<glslang::TProgram>();
   bool all = true;
   bool any = false;
@@ -554,9 +555,7 @@ CompiledProgram::CompiledProgram(const Sources& vertex, const Sources& fragment,
     any = true;
     // As CheckShader parses it (its diagnostics were reported there).
     compiler::DiagnosticSink scratch(0);
-    CheckOptions options;
-    options.profile = profile_;
-    PreparedShader prepared = PrepareShader(stage, sources, options, &scratch);
+    PreparedShader prepared = PrepareShader(stage, sources, options_, &scratch);
     if (!prepared.checked) {
       all = false;
       continue;
@@ -591,6 +590,12 @@ CompiledProgram::~CompiledProgram() {
 }
 
 bool CompiledProgram::parsed(Stage stage) const { return parsed_[Index(stage)]; }
+
+bool CompiledProgram::HasMain(Stage stage) const {
+  if (!parsed(stage)) return false;
+  glslang::TIntermediate* ast = shaders_[Index(stage)]->getIntermediate();
+  return ast != nullptr && ast->getTreeRoot() != nullptr && DefinesMain(ast->getTreeRoot());
+}
 
 const char* CompiledProgram::link_log() const {
   const char* log = program_->getInfoLog();
@@ -742,15 +747,25 @@ std::vector<Contribution> Contributions(const Reflection& r, Resource resource) 
   return out;
 }
 
-Reflection ReflectShader(Stage stage, const Sources& sources, compiler::DiagnosticSink* sink) {
+Reflection ReflectShader(Stage stage, const Sources& sources, compiler::DiagnosticSink* sink,
+                         const CheckOptions& options) {
   Reflection reflection;
   reflection.stage = stage;
   // CheckShader reports every diagnostic (and initialises glslang); the AST comes from a
   // second compile of the same text, which CheckShader does not keep.
-  if (!CheckShader(stage, sources, CheckOptions{}, sink).ok) return reflection;
+  CheckOptions object = options;
+  object.link = false;
+  if (!CheckShader(stage, sources, object, sink).ok) return reflection;
   Sources none;
   CompiledProgram program(stage == Stage::Vertex ? sources : none,
-                          stage == Stage::Fragment ? sources : none);
+                          stage == Stage::Fragment ? sources : none, &options);
+  if (program.parsed(stage) && !program.linked() && !program.HasMain(stage)) {
+    // A shader object without main(): nothing is active until a program links it.
+    sink->Report(Info(Diag::LinkMissingMain), sources.front(), {0, 0},
+                 "the shader has no main(): info reflects what a shader uses, and a shader "
+                 "object without main() uses nothing until a program links it with one");
+    return reflection;
+  }
   if (!program.linked() || !program.Reflect(stage, &reflection)) {
     sink->Report(Info(Diag::InternalError), sources.front(), {0, 0},
                  "glslang rejected a shader it had accepted; no reflection");

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "arbiter/compiler/limits.h"
+#include "arbiter/glsl/check.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/reflect.h"
 
@@ -29,13 +29,15 @@ class CompiledProgram {
   // Either list may be empty (a one-stage program). The sources must outlive the object.
   CompiledProgram(const std::vector<const compiler::SourceFile*>& vertex,
                   const std::vector<const compiler::SourceFile*>& fragment,
-                  const compiler::LimitProfile* profile = nullptr);
+                  const CheckOptions* options = nullptr);
   ~CompiledProgram();
   CompiledProgram(const CompiledProgram&) = delete;
   CompiledProgram& operator=(const CompiledProgram&) = delete;
 
   // The stage was given and compiled without errors.
   bool parsed(Stage stage) const;
+  // The stage parsed and defines main().
+  bool HasMain(Stage stage) const;
   // Every given stage compiled and glslang linked them (cross-stage checks included).
   bool linked() const { return linked_; }
   // glslang's link messages ("" when none).
@@ -49,7 +51,7 @@ class CompiledProgram {
   const std::vector<const compiler::SourceFile*>& StageSources(Stage stage) const;
 
   std::vector<const compiler::SourceFile*> sources_[2];
-  const compiler::LimitProfile* profile_;  // the extensions the target has
+  CheckOptions options_;  // the target's extensions, the preprocessor options
   std::unique_ptr<glslang::TShader> shaders_[2];
   // Each stage's static uses, collected before glslang's link removes uncalled functions.
   std::unique_ptr<StaticUses> uses_[2];

@@ -85,7 +85,7 @@ struct Reflection {
 // are reported into `sink`) and reflects it. The result's `ok` is false when the shader has
 // errors; its lists are then empty. Thread-safe.
 Reflection ReflectShader(Stage stage, const std::vector<const compiler::SourceFile*>& sources,
-                         compiler::DiagnosticSink* sink);
+                         compiler::DiagnosticSink* sink, const CheckOptions& options = {});
 
 // "vertex" or "fragment".
 std::string_view StageName(Stage stage);
