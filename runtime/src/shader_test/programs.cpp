@@ -9,6 +9,7 @@
 #include "arbiter/glsl/check.h"
 #include "arbiter/runtime/translate.h"
 #include "shader_test/session.h"
+#include "shader_test/words.h"
 
 namespace arbiter::runtime::shader_test {
 namespace {
@@ -117,10 +118,35 @@ bool Session::TranslateArb(std::string* vertex, std::string* fragment) {
   return true;
 }
 
+std::string Session::VersionDirective() const {
+  // piglit's shader_runner gives a shader without #version the version its [require] asks
+  // for ("GLSL >= 1.20" -> "#version 120"): 1.10 is every shader's default.
+  for (const ShaderTestLine& r : test_.require) {
+    std::vector<std::string> w = Words(r.text);
+    if (w.size() == 3 && w[0] == "GLSL" && (w[1] == ">=" || w[1] == "==") && w[2] != "1.10") {
+      std::string digits;
+      for (char c : w[2]) {
+        if (c != '.') digits += c;
+      }
+      if (digits.size() == 3) return "#version " + digits + "\n";
+    }
+  }
+  return "";
+}
+
+std::string Session::WithVersion(const std::string& text) const {
+  if (text.find("#version") != std::string::npos) return text;
+  return VersionDirective() + text;
+}
+
 void Session::AddGlslDiagnostics(const std::string& stage, const std::string& text, int line) {
-  // The shader text padded so that glslang's line numbers are the test file's.
-  auto file = std::make_unique<compiler::SourceFile>(
-      test_.path, std::string(static_cast<size_t>(line), '\n') + text);
+  // The shader text padded so that glslang's line numbers are the test file's; a #version
+  // shader_runner adds goes on the section's header line.
+  std::string versioned = WithVersion(text);
+  const size_t added = versioned.size() - text.size();
+  const auto pad = static_cast<size_t>(added > 0 && line > 0 ? line - 1 : line);
+  auto file =
+      std::make_unique<compiler::SourceFile>(test_.path, std::string(pad, '\n') + versioned);
   compiler::DiagnosticSink sink(20);
   glsl::CheckOptions options;
   options.link = false;
@@ -164,7 +190,8 @@ bool Session::BuildGlsl(const std::string& translated_vertex,
   program_ = gl_.CreateProgram();
   for (const Stage& s : stages) {
     GLuint shader = gl_.CreateShader(s.type);
-    const GLchar* text = s.text.c_str();
+    const std::string source = s.translated ? s.text : WithVersion(s.text);
+    const GLchar* text = source.c_str();
     gl_.ShaderSource(shader, 1, &text, nullptr);
     gl_.CompileShader(shader);
     GLint ok = GL_FALSE;

@@ -79,6 +79,10 @@ class Session {
                 std::unique_ptr<compiler::SourceFile>* file, arbvp::CheckResult* checked);
   void UploadTranslationState();  // before each draw under --translate
   void AddGlslDiagnostics(const std::string& stage, const std::string& text, int line);
+  // The "#version N\n" shader_runner puts before a shader without one ("" for 1.10), and the
+  // shader text with it.
+  std::string VersionDirective() const;
+  std::string WithVersion(const std::string& text) const;
 
   // commands.cpp
   void Execute(const ShaderTestLine& command);
