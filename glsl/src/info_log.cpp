@@ -43,6 +43,7 @@ constexpr MessageRule kCompileRules[] = {
     {"reserved for future use", Diag::ReservedWord},
     {"cannot convert", Diag::TypeMismatch},
     {"wrong operand types", Diag::TypeMismatch},
+    {"convert no return value", Diag::TypeMismatch},
     {"no matching overloaded function", Diag::NoMatchingFunction},
     {"constructor", Diag::Constructor},
     {"l-value", Diag::LValue},
@@ -257,6 +258,18 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   // Deprecations of 1.30 come from parsing an EXT_gpu_shader4 shader as 1.30 (prepare.h):
   // nothing of 1.10 or 1.20 is deprecated.
   if (m.warning && m.body.find("deprecated in version") != std::string::npos) return true;
+  // glslang only warns about a return value of another type; 1.10 has no implicit
+  // conversions (4.1.10), and 1.20's are "done only as indicated by other sections" (4.1.10),
+  // which 6.1 and 6.4 do not do for return.
+  constexpr std::string_view kReturnConversion = "type conversion on return values";
+  if (m.warning && m.body.find(kReturnConversion) != std::string::npos) {
+    Message error = m;
+    error.warning = false;
+    error.body.replace(error.body.find(kReturnConversion), error.body.size(),
+                       "the returned value's type is not the function's return type, and "
+                       "GLSL 1.10 and 1.20 convert no return value (section 4.1.10)");
+    return Emit(error, ctx, link, sink);
+  }
   const Relaxation* relaxed = m.warning ? nullptr : Relaxed(m.body, ctx, link);
   if (relaxed != nullptr && relaxed->warning == Diag::CompileError) return false;
   // glslang's messages name the words source_text.cpp renamed as it saw them.
@@ -391,25 +404,33 @@ int ReportInfoLog(const char* log, const InfoLogContext& ctx, bool link,
                   compiler::DiagnosticSink* sink) {
   int relaxed = 0;
   if (log == nullptr || ctx.sources.empty()) return relaxed;
-  std::string_view rest(log);
-  Message current;
-  bool have = false;
-  while (!rest.empty()) {
+  std::vector<Message> messages;
+  for (std::string_view rest(log); !rest.empty();) {
     size_t nl = rest.find('\n');
     std::string_view line = rest.substr(0, nl);
     rest = nl == std::string_view::npos ? std::string_view() : rest.substr(nl + 1);
     bool error = line.substr(0, 7) == "ERROR: ";
     bool warning = line.substr(0, 9) == "WARNING: ";
     if (error || warning) {
-      if (have && !Emit(current, ctx, link, sink)) ++relaxed;
-      current = Message{warning, std::string(line.substr(error ? 7 : 9))};
-      have = true;
-    } else if (have && !Trim(line).empty()) {
-      current.body += " ";
-      current.body += Trim(line);
+      messages.push_back(Message{warning, std::string(line.substr(error ? 7 : 9))});
+    } else if (!messages.empty() && !Trim(line).empty()) {
+      messages.back().body += " ";
+      messages.back().body += Trim(line);
     }
   }
-  if (have && !Emit(current, ctx, link, sink)) ++relaxed;
+  for (const Message& m : messages) {
+    // A return value glslang cannot convert at all is an error already; its warning about
+    // converting return values (made an error in Emit) would say it twice.
+    if (m.warning && m.body.find("type conversion on return values") != std::string::npos) {
+      const std::string at = m.body.substr(0, m.body.find(": ") + 1);
+      const bool known = std::any_of(messages.begin(), messages.end(), [&](const Message& e) {
+        return !e.warning && e.body.compare(0, at.size(), at) == 0 &&
+               e.body.find("cannot convert return value") != std::string::npos;
+      });
+      if (known) continue;
+    }
+    if (!Emit(m, ctx, link, sink)) ++relaxed;
+  }
   return relaxed;
 }
 

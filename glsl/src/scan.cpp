@@ -1,5 +1,7 @@
 #include "scan.h"
 
+#include <algorithm>
+
 namespace arbiter::glsl {
 namespace {
 
@@ -117,6 +119,24 @@ std::vector<Directive> Directives(std::string_view blanked) {
       }
     }
     line = end + 1;
+  }
+  return out;
+}
+
+std::vector<Token> JoinOperators(std::span<const Token> tokens) {
+  static constexpr std::string_view kPairs[] = {"<<", ">>", "<=", ">=", "==", "!=", "&&", "||"};
+  std::vector<Token> out;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    Token t = tokens[i];
+    const bool touch = i + 1 < tokens.size() && t.kind == Token::Punct &&
+                       tokens[i + 1].kind == Token::Punct &&
+                       tokens[i + 1].text.data() == t.text.data() + 1;
+    if (touch &&
+        std::ranges::find(kPairs, std::string_view(t.text.data(), 2)) != std::end(kPairs)) {
+      t.text = std::string_view(t.text.data(), 2);
+      ++i;
+    }
+    out.push_back(t);
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,5 +50,11 @@ struct Directive {
 // Continuation lines ('\' before the newline) are not joined: GLSL 1.10 and 1.20 have none (3.1
 // and 3.3).
 std::vector<Directive> Directives(std::string_view blanked);
+
+// `tokens` with each two-character operator of a #if expression ("<<", ">>", "<=", ">=", "==",
+// "!=", "&&", "||") joined into one Punct token, left to right. Two tokens join only when they
+// touch in the text, so "< <" stays apart; the tokens must view one text (a Tokenize or a
+// Directive's words).
+std::vector<Token> JoinOperators(std::span<const Token> tokens);
 
 }  // namespace arbiter::glsl

@@ -65,6 +65,7 @@ void RunStrictChecks(const StrictContext& ctx) {
   CheckFloatLiterals(ctx);
   CheckArraySizes(ctx);
   CheckExpressions(ctx);
+  CheckFunctions(ctx);
   CheckBuiltinVariables(ctx);
 }
 

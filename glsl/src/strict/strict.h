@@ -64,6 +64,10 @@ void CheckArraySizes(const StrictContext& ctx);  // strict_arrays.cpp
 // '?:'; an unparenthesized assignment as the third operand of '?:'.
 void CheckExpressions(const StrictContext& ctx);  // strict_expressions.cpp
 
+// Chapter 6.1, function definitions: out/inout arrays (1.10), samplers as out/inout parameters
+// or return values, prototypes inside functions (1.20).
+void CheckFunctions(const StrictContext& ctx);  // strict_functions.cpp
+
 // Chapter 7, built-in variables: constant gl_TexCoord indices within gl_MaxTextureCoords;
 // with the link step, not both gl_FragColor and gl_FragData assigned.
 void CheckBuiltinVariables(const StrictContext& ctx);  // strict_builtins.cpp

@@ -553,7 +553,39 @@ class ArraySizes {
 
 }  // namespace
 
+// 4.1.9 (both versions): an array size is an integral constant expression, "a scalar
+// integer" (1.20 4.3.3); glslang takes a vector constructor, `a[ivec2(2, 2)]`, as its first
+// component. A '[' whose whole operand is a vector constructor is such a size (as an index,
+// glslang rejects the vector itself).
+void CheckVectorSizes(const StrictContext& ctx) {
+  for (const compiler::SourceFile* file : ctx.sources) {
+    const std::vector<Token> tokens = Tokenize(file->text());
+    for (size_t i = 0; i + 3 < tokens.size(); ++i) {
+      std::string_view type = tokens[i + 1].text;
+      const bool vector = type.size() == 4 || type.size() == 5
+                              ? (type.substr(type.size() - 4, 3) == "vec" &&
+                                 type.back() >= '2' && type.back() <= '4')
+                              : false;
+      if (tokens[i].text != "[" || !vector || tokens[i + 2].text != "(") continue;
+      int depth = 0;
+      size_t close = i + 2;
+      for (; close < tokens.size(); ++close) {
+        if (tokens[close].text == "(") ++depth;
+        if (tokens[close].text == ")" && --depth == 0) break;
+      }
+      if (close + 1 >= tokens.size() || tokens[close + 1].text != "]") continue;
+      const Token& t = tokens[i + 1];
+      ctx.sink->Report(Info(Diag::ArraySize), file,
+                       {t.offset, static_cast<uint32_t>(t.offset + t.text.size())},
+                       fmt::format("an array size must be a scalar integer (an integral constant "
+                                   "expression, {} sections 4.1.9 and 4.3.3), not a '{}'",
+                                   VersionName(ctx), type));
+    }
+  }
+}
+
 void CheckArraySizes(const StrictContext& ctx) {
+  CheckVectorSizes(ctx);
   // 1.20 4.3.3: "An integral constant expression is a constant expression that evaluates to a
   // scalar integer", built-in calls included: what glslang checks.
   if (ctx.version == 110) ArraySizes(ctx).Run();

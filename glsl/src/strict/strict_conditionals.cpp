@@ -6,10 +6,11 @@
 // cannot tell a value (a function-like macro), it reports nothing inside that group.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
-#include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,47 +20,32 @@
 namespace arbiter::glsl {
 namespace {
 
-struct Tok {
-  std::string text;
-  size_t offset;  // in the file, of the token or of the macro name it was expanded from
-};
-
-// The tokens of a directive's operand text: identifiers, numbers, two-character operators
-// and single characters.
-std::vector<Tok> Lex(std::string_view text, size_t base) {
-  static const std::set<std::string_view> kPairs = {"<<", ">>", "<=", ">=", "==", "!=", "&&", "||"};
-  std::vector<Tok> out;
-  for (size_t i = 0; i < text.size();) {
-    if (std::isspace(static_cast<unsigned char>(text[i]))) {
-      ++i;
-      continue;
-    }
-    size_t start = i;
-    if (IsIdentChar(text[i])) {
-      while (i < text.size() && IsIdentChar(text[i])) ++i;
-    } else if (i + 1 < text.size() && kPairs.count(text.substr(i, 2))) {
-      i += 2;
-    } else {
-      ++i;
-    }
-    out.push_back({std::string(text.substr(start, i - start)), base + start});
-  }
-  return out;
-}
-
 struct Macro {
   bool function_like = false;
-  std::string body;
+  std::vector<Token> body;  // operators joined; views into the blanked source or preamble
 };
+using Macros = std::map<std::string, Macro, std::less<>>;
+
+// The macro a #define defines; its name is d.words[0].
+Macro Define(const Directive& d) {
+  const Token& name = d.words[0];
+  const std::span<const Token> rest = std::span(d.words).subspan(1);
+  Macro macro;
+  // "#define F(x)" is function-like, "#define F (x)" is not.
+  macro.function_like = !rest.empty() && rest[0].text == "(" &&
+                        rest[0].text.data() == name.text.data() + name.text.size();
+  macro.body = JoinOperators(rest);
+  return macro;
+}
 
 // Evaluates one #if or #elif expression; nullopt when it cannot (a function-like macro, a
 // malformed expression: glslang reports the latter).
 class Condition {
  public:
-  Condition(const std::map<std::string, Macro, std::less<>>& macros, std::vector<Tok>* undefined)
+  Condition(const Macros& macros, std::vector<Token>* undefined)
       : macros_(macros), undefined_(undefined) {}
 
-  std::optional<long long> Evaluate(const std::vector<Tok>& tokens) {
+  std::optional<long long> Evaluate(std::span<const Token> tokens) {
     if (!Expand(tokens, 0)) return std::nullopt;
     pos_ = 0;
     std::optional<long long> value = Binary(0);
@@ -69,11 +55,11 @@ class Condition {
 
  private:
   // Replaces 'defined X', 'defined ( X )' and macros; an identifier left is reported and 0.
-  bool Expand(const std::vector<Tok>& tokens, int depth) {
+  bool Expand(std::span<const Token> tokens, int depth) {
     if (depth > 32) return false;
     for (size_t i = 0; i < tokens.size(); ++i) {
-      const Tok& t = tokens[i];
-      if (!IsIdentStart(t.text[0])) {
+      const Token& t = tokens[i];
+      if (t.kind != Token::Identifier) {
         expanded_.push_back(t);
         continue;
       }
@@ -81,29 +67,29 @@ class Condition {
         size_t name = i + 1;
         bool paren = name < tokens.size() && tokens[name].text == "(";
         if (paren) ++name;
-        if (name >= tokens.size() || !IsIdentStart(tokens[name].text[0])) return false;
+        if (name >= tokens.size() || tokens[name].kind != Token::Identifier) return false;
         if (paren && (name + 1 >= tokens.size() || tokens[name + 1].text != ")")) return false;
         bool is_defined = macros_.count(tokens[name].text) > 0 || Predefined(tokens[name].text);
-        expanded_.push_back({is_defined ? "1" : "0", t.offset});
+        expanded_.push_back({Token::Number, is_defined ? "1" : "0", t.offset});
         i = paren ? name + 1 : name;
         continue;
       }
       auto macro = macros_.find(t.text);
       if (macro != macros_.end()) {
         if (macro->second.function_like) return false;
-        std::vector<Tok> body = Lex(macro->second.body, 0);
-        for (Tok& b : body) b.offset = t.offset;  // reported at the name in the directive
+        std::vector<Token> body = macro->second.body;
+        for (Token& b : body) b.offset = t.offset;  // reported at the name in the directive
         if (!Expand(body, depth + 1)) return false;
         continue;
       }
       if (Predefined(t.text)) {
-        expanded_.push_back({"1", t.offset});
+        expanded_.push_back({Token::Number, "1", t.offset});
         continue;
       }
       // Extension macros ("GL_" names, reserved to the implementation) may be defined by it.
       if (t.text.compare(0, 3, "GL_") == 0) return false;
       undefined_->push_back(t);
-      expanded_.push_back({"0", t.offset});
+      expanded_.push_back({Token::Number, "0", t.offset});
     }
     return true;
   }
@@ -125,7 +111,7 @@ class Condition {
   std::optional<long long> Binary(int min) {
     std::optional<long long> left = Unary();
     while (left && pos_ < expanded_.size()) {
-      std::string op = expanded_[pos_].text;
+      std::string_view op = expanded_[pos_].text;
       int prec = Precedence(op);
       if (prec == 0 || prec <= min) break;
       ++pos_;
@@ -160,7 +146,7 @@ class Condition {
 
   std::optional<long long> Unary() {
     if (pos_ >= expanded_.size()) return std::nullopt;
-    std::string t = expanded_[pos_++].text;
+    std::string_view t = expanded_[pos_++].text;
     if (t == "+" || t == "-" || t == "~" || t == "!") {
       std::optional<long long> v = Unary();
       if (!v) return std::nullopt;
@@ -178,16 +164,17 @@ class Condition {
     if (!std::isdigit(static_cast<unsigned char>(t[0]))) return std::nullopt;
     try {
       size_t used = 0;
-      long long v = std::stoll(t, &used, 0);  // decimal, octal (0...) and hexadecimal (0x...)
+      long long v =
+          std::stoll(std::string(t), &used, 0);  // decimal, octal (0...) and hexadecimal (0x...)
       return used == t.size() ? std::optional<long long>(v) : std::nullopt;
     } catch (...) {
       return std::nullopt;
     }
   }
 
-  const std::map<std::string, Macro, std::less<>>& macros_;
-  std::vector<Tok>* undefined_;
-  std::vector<Tok> expanded_;
+  const Macros& macros_;
+  std::vector<Token>* undefined_;
+  std::vector<Token> expanded_;
   size_t pos_ = 0;
 };
 
@@ -200,109 +187,127 @@ struct Group {
 };
 
 // The macros of the preamble (-D, -U, --preamble): defined before the shader's first line.
-std::map<std::string, Macro, std::less<>> PreambleMacros(std::string_view preamble) {
-  std::map<std::string, Macro, std::less<>> macros;
-  const std::string blanked = BlankComments(preamble);
-  for (const Directive& d : Directives(blanked)) {
+Macros PreambleMacros(const std::vector<Directive>& directives) {
+  Macros macros;
+  for (const Directive& d : directives) {
     if (d.words.empty() || d.words[0].kind != Token::Identifier) continue;
-    std::string name(d.words[0].text);
     if (d.name == "undef") {
-      macros.erase(name);
+      macros.erase(std::string(d.words[0].text));
     } else if (d.name == "define") {
-      size_t name_end = d.words[0].offset + d.words[0].text.size();
-      Macro macro;
-      macro.function_like = name_end < d.end && blanked[name_end] == '(';
-      macro.body = blanked.substr(name_end, d.end - name_end);
-      macros[name] = macro;
+      macros[std::string(d.words[0].text)] = Define(d);
     }
   }
   return macros;
 }
 
+// Follows the conditional directives of one source as a preprocessor does, reporting the
+// undefined identifiers of each #if and #elif it evaluates.
+class Conditionals {
+ public:
+  Conditionals(const StrictContext& ctx, const compiler::SourceFile* file, Macros macros)
+      : ctx_(ctx), file_(file), macros_(std::move(macros)) {}
+
+  void Follow(const Directive& d) {
+    const std::vector<Token>& words = d.words;
+    if (d.name == "define" && !Active() && InUnknown()) {
+      // Perhaps defined: its uses make a condition unknown, as a function-like macro does.
+      if (!words.empty()) macros_[std::string(words[0].text)] = Macro{true, {}};
+    } else if (d.name == "define" && Active()) {
+      if (!words.empty() && words[0].kind == Token::Identifier) {
+        macros_[std::string(words[0].text)] = Define(d);
+      }
+    } else if (d.name == "undef" && Active()) {
+      if (!words.empty()) macros_.erase(std::string(words[0].text));
+    } else if (d.name == "ifdef" || d.name == "ifndef") {
+      bool defined = !words.empty() && macros_.count(words[0].text) > 0;
+      bool value = d.name == "ifdef" ? defined : !defined;
+      bool parent = Active();
+      groups_.push_back({parent, parent && value, value, !Judged()});
+    } else if (d.name == "if") {
+      bool parent = Active();
+      std::optional<bool> value;
+      if (parent && Judged()) value = Evaluate(JoinOperators(words));
+      bool unknown = !Judged() || (parent && !value);
+      groups_.push_back({parent, parent && value.value_or(false), value.value_or(true), unknown});
+    } else if (d.name == "elif" && !groups_.empty()) {
+      Group& g = groups_.back();
+      if (g.parent_active && !g.taken && !g.unknown) {
+        std::optional<bool> value = Evaluate(JoinOperators(words));
+        g.unknown = !value;
+        g.active = value.value_or(false);
+        g.taken = value.value_or(true);
+      } else {
+        g.active = false;
+      }
+    } else if (d.name == "else" && !groups_.empty()) {
+      Group& g = groups_.back();
+      g.active = g.parent_active && !g.taken && !g.unknown;
+      g.taken = true;
+    } else if (d.name == "endif" && !groups_.empty()) {
+      groups_.pop_back();
+    }
+  }
+
+ private:
+  bool Active() const { return groups_.empty() || groups_.back().active; }
+  bool Judged() const { return groups_.empty() || !groups_.back().unknown; }
+  bool InUnknown() const {
+    return std::ranges::any_of(groups_, [](const Group& g) { return g.unknown; });
+  }
+
+  // Evaluates a condition, reporting its undefined identifiers; nullopt when unknown.
+  std::optional<bool> Evaluate(std::span<const Token> tokens) {
+    std::vector<Token> undefined;
+    std::optional<long long> value = Condition(macros_, &undefined).Evaluate(tokens);
+    if (!value && undefined.empty()) return std::nullopt;
+    for (const Token& t : undefined) {
+      ctx_.sink->Report(
+          Info(Diag::IfUndefinedIdentifier), file_,
+          {t.offset, static_cast<uint32_t>(t.offset + std::min(t.text.size(), size_t{64}))},
+          fmt::format("'{}' is not a macro: #if and #elif expressions operate on "
+                      "integer literals and 'defined' only (GLSL 1.10 section "
+                      "3.3); glslang takes an undefined name as 0",
+                      t.text));
+    }
+    return value.value_or(0) != 0;
+  }
+
+  const StrictContext& ctx_;
+  const compiler::SourceFile* file_;
+  Macros macros_;
+  std::vector<Group> groups_;
+};
+
+// The blanked text with a '\n' where the source has a lone '\r' (offsets unchanged): glslang
+// ends a line there too, and so has this rule, but Directives ends lines at '\n' only.
+std::string EndLinesAtCarriageReturns(std::string_view source, std::string blanked) {
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (source[i] == '\r' && (i + 1 == source.size() || source[i + 1] != '\n')) blanked[i] = '\n';
+  }
+  return blanked;
+}
+
+// Whether a form feed or vertical tab comes before the directive's name on its line. This rule
+// has taken such a line for text (glslang and Directives take it for a directive); kept so
+// that reading the directives through Directives changes nothing.
+bool BlankBeforeNameIsFormFeed(std::string_view text, const Directive& d) {
+  const size_t line = text.rfind('\n', d.hash);
+  const size_t start = line == std::string_view::npos ? 0 : line + 1;
+  return !d.name.empty() &&
+         text.substr(start, d.name_offset - start).find_first_of("\f\v") != std::string_view::npos;
+}
+
 }  // namespace
 
 void CheckConditionals(const StrictContext& ctx) {
+  const std::string preamble = BlankComments(ctx.preamble);  // the macros view into it
+  const Macros preamble_macros = PreambleMacros(Directives(preamble));
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
-    const compiler::SourceFile* file = ctx.sources[index];
-    const std::string& blanked = BlankedText(ctx, index);
-    std::map<std::string, Macro, std::less<>> macros = PreambleMacros(ctx.preamble);
-    std::vector<Group> groups;
-    auto active = [&] { return groups.empty() || groups.back().active; };
-    auto judged = [&] { return groups.empty() || !groups.back().unknown; };
-    // Evaluates a condition, reporting its undefined identifiers; nullopt when unknown.
-    auto evaluate = [&](const std::vector<Tok>& tokens) -> std::optional<bool> {
-      std::vector<Tok> undefined;
-      std::optional<long long> value = Condition(macros, &undefined).Evaluate(tokens);
-      if (!value && undefined.empty()) return std::nullopt;
-      for (const Tok& t : undefined) {
-        ctx.sink->Report(Info(Diag::IfUndefinedIdentifier), file,
-                         {static_cast<uint32_t>(t.offset),
-                          static_cast<uint32_t>(t.offset + std::min(t.text.size(), size_t{64}))},
-                         fmt::format("'{}' is not a macro: #if and #elif expressions operate on "
-                                     "integer literals and 'defined' only (GLSL 1.10 section "
-                                     "3.3); glslang takes an undefined name as 0",
-                                     t.text));
-      }
-      return value.value_or(0) != 0;
-    };
-    for (uint32_t n = 1; n <= file->line_count(); ++n) {
-      std::string_view line =
-          std::string_view(blanked).substr(file->LineStart(n), file->LineText(n).size());
-      size_t first = line.find_first_not_of(" \t");
-      if (first == std::string_view::npos || line[first] != '#') continue;
-      size_t word = line.find_first_not_of(" \t", first + 1);
-      if (word == std::string_view::npos) continue;
-      size_t word_end = word;
-      while (word_end < line.size() && IsIdentChar(line[word_end])) ++word_end;
-      std::string_view directive = line.substr(word, word_end - word);
-      std::string_view rest = line.substr(word_end);
-      size_t base = file->LineStart(n) + word_end;
-      bool in_unknown = false;
-      for (const Group& g : groups) in_unknown |= g.unknown;
-      if (directive == "define" && !active() && in_unknown) {
-        // Perhaps defined: its uses make a condition unknown, as a function-like macro does.
-        std::vector<Tok> tokens = Lex(rest, base);
-        if (!tokens.empty()) macros[tokens[0].text] = Macro{true, ""};
-      } else if (directive == "define" && active()) {
-        std::vector<Tok> tokens = Lex(rest, base);
-        if (tokens.empty() || !IsIdentStart(tokens[0].text[0])) continue;
-        size_t name_end = tokens[0].offset - base + tokens[0].text.size();
-        Macro macro;
-        macro.function_like = name_end < rest.size() && rest[name_end] == '(';
-        macro.body = std::string(rest.substr(name_end));
-        macros[tokens[0].text] = macro;
-      } else if (directive == "undef" && active()) {
-        std::vector<Tok> tokens = Lex(rest, base);
-        if (!tokens.empty()) macros.erase(tokens[0].text);
-      } else if (directive == "ifdef" || directive == "ifndef") {
-        std::vector<Tok> tokens = Lex(rest, base);
-        bool defined = !tokens.empty() && macros.count(tokens[0].text) > 0;
-        bool value = directive == "ifdef" ? defined : !defined;
-        bool parent = active();
-        groups.push_back({parent, parent && value, value, !judged()});
-      } else if (directive == "if") {
-        bool parent = active();
-        std::optional<bool> value;
-        if (parent && judged()) value = evaluate(Lex(rest, base));
-        bool unknown = !judged() || (parent && !value);
-        groups.push_back({parent, parent && value.value_or(false), value.value_or(true), unknown});
-      } else if (directive == "elif" && !groups.empty()) {
-        Group& g = groups.back();
-        if (g.parent_active && !g.taken && !g.unknown) {
-          std::optional<bool> value = evaluate(Lex(rest, base));
-          g.unknown = !value;
-          g.active = value.value_or(false);
-          g.taken = value.value_or(true);
-        } else {
-          g.active = false;
-        }
-      } else if (directive == "else" && !groups.empty()) {
-        Group& g = groups.back();
-        g.active = g.parent_active && !g.taken && !g.unknown;
-        g.taken = true;
-      } else if (directive == "endif" && !groups.empty()) {
-        groups.pop_back();
-      }
+    const std::string text =
+        EndLinesAtCarriageReturns(ctx.sources[index]->text(), BlankedText(ctx, index));
+    Conditionals conditionals(ctx, ctx.sources[index], preamble_macros);
+    for (const Directive& d : Directives(text)) {
+      if (!BlankBeforeNameIsFormFeed(text, d)) conditionals.Follow(d);
     }
   }
 }

@@ -3,11 +3,13 @@
 // driver; the shader author almost certainly meant something else, so it is a warning.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "strict.h"
 
@@ -16,10 +18,10 @@ namespace {
 
 bool IsDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
-// The length of the number token at `at` (digits, '.', an exponent) and whether it is a
-// floating-point literal (it has a '.' or an exponent).
-size_t NumberLength(std::string_view text, size_t at, bool* is_float) {
-  size_t i = at;
+// The length of the literal a number token starts with (digits, '.', an exponent) and whether
+// it is a floating-point literal (it has a '.' or an exponent).
+size_t LiteralLength(std::string_view text, bool* is_float) {
+  size_t i = 0;
   while (i < text.size() && IsDigit(text[i])) ++i;
   *is_float = false;
   if (i < text.size() && text[i] == '.') {
@@ -36,7 +38,7 @@ size_t NumberLength(std::string_view text, size_t at, bool* is_float) {
       while (i < text.size() && IsDigit(text[i])) ++i;
     }
   }
-  return i - at;
+  return i;
 }
 
 bool HasNonZeroMantissaDigit(std::string_view number) {
@@ -47,38 +49,37 @@ bool HasNonZeroMantissaDigit(std::string_view number) {
   return false;
 }
 
+// The tokens of the text, its directives' included, in text order.
+std::vector<Token> AllTokens(std::string_view blanked) {
+  std::vector<Token> tokens = Tokenize(blanked);
+  for (const Directive& d : Directives(blanked)) {
+    tokens.insert(tokens.end(), d.words.begin(), d.words.end());
+  }
+  std::ranges::sort(tokens, {}, &Token::offset);
+  return tokens;
+}
+
 }  // namespace
 
 void CheckFloatLiterals(const StrictContext& ctx) {
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const compiler::SourceFile* file = ctx.sources[index];
     const std::string& text = BlankedText(ctx, index);
-    for (size_t i = 0; i < text.size();) {
-      const bool starts =
-          IsDigit(text[i]) || (text[i] == '.' && i + 1 < text.size() && IsDigit(text[i + 1]));
-      if (!starts || (i > 0 && (IsIdentChar(text[i - 1]) || text[i - 1] == '.'))) {
-        // Skip the rest of an identifier, so the digits of 'vec4' or 'a1e5' are no number.
-        if (IsIdentChar(text[i])) {
-          while (i < text.size() && IsIdentChar(text[i])) ++i;
-        } else {
-          ++i;
-        }
-        continue;
-      }
+    for (const Token& t : AllTokens(text)) {
+      // After a letter or a '.', digits are no literal of their own ('a.5e50' is a field).
+      const char before = t.offset > 0 ? text[t.offset - 1] : ' ';
+      if (t.kind != Token::Number || IsIdentChar(before) || before == '.') continue;
+      // The literal's digits, point and exponent: glslang reports a suffix itself.
       bool is_float = false;
-      const size_t length = NumberLength(text, i, &is_float);
-      const std::string number = text.substr(i, length);
-      if (is_float) {
-        const float value = std::strtof(number.c_str(), nullptr);
-        if (std::isinf(value) || (value == 0.0f && HasNonZeroMantissaDigit(number))) {
-          const compiler::Range range{static_cast<uint32_t>(i), static_cast<uint32_t>(i + length)};
-          ctx.sink->Report(Info(Diag::NumberRange), file, range,
-                           fmt::format("{} is beyond the range of a 32-bit float: it becomes {}",
-                                       number, std::isinf(value) ? "infinity" : "zero"));
-        }
+      const std::string number(t.text.substr(0, LiteralLength(t.text, &is_float)));
+      if (!is_float) continue;
+      const float value = std::strtof(number.c_str(), nullptr);
+      if (std::isinf(value) || (value == 0.0f && HasNonZeroMantissaDigit(number))) {
+        const compiler::Range range{t.offset, static_cast<uint32_t>(t.offset + number.size())};
+        ctx.sink->Report(Info(Diag::NumberRange), file, range,
+                         fmt::format("{} is beyond the range of a 32-bit float: it becomes {}",
+                                     number, std::isinf(value) ? "infinity" : "zero"));
       }
-      i += std::max<size_t>(length, 1);
-      while (i < text.size() && IsIdentChar(text[i])) ++i;  // a suffix glslang reports itself
     }
   }
 }

@@ -1,0 +1,135 @@
+// Chapter 6.1 (function definitions), where glslang 12 follows later versions or skips a rule:
+// - 1.10 5.8: "non-dereferenced arrays ... cannot be l-values", so an array cannot be an out or
+//   inout parameter (1.20 makes arrays first class);
+// - 1.20 4.1.7: "Samplers cannot be treated as l-values; hence cannot be used as out or inout
+//   function parameters", and they "can only be declared as function parameters or uniform
+//   variables" (so no function returns one, in a structure or not). 1.10 says samplers are
+//   only function parameters and uniforms, which implies the same; Mesa applies it to both;
+// - 1.20 6.1: "Function declarations (prototypes) cannot occur inside of functions; they must
+//   be at global scope". glslang accepts them in a function body.
+// The first two are read from the AST's function definitions, the last from the tokens.
+#include <fmt/format.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+
+#include <set>
+#include <string>
+
+#include "../source_text.h"
+#include "strict.h"
+
+namespace arbiter::glsl {
+namespace {
+
+// A sampler, or a structure (or array of them) with a sampler among its fields, at any depth.
+bool HoldsSampler(const glslang::TType& type) {
+  if (type.getBasicType() == glslang::EbtSampler) return true;
+  if (type.getBasicType() != glslang::EbtStruct || type.getStruct() == nullptr) return false;
+  for (const glslang::TTypeLoc& field : *type.getStruct()) {
+    if (HoldsSampler(*field.type)) return true;
+  }
+  return false;
+}
+
+void Report(const StrictContext& ctx, Diag diag, const glslang::TSourceLoc& loc,
+            std::string_view name, std::string message) {
+  const compiler::SourceFile* file = ctx.sources.front();
+  compiler::Range range{0, 0};
+  bool at_loc = RangeOfLoc(ctx, loc, name.size(), &file, &range) &&
+                file->text().compare(range.begin, name.size(), name) == 0;
+  if (!at_loc && !FindDeclaration(ctx, name, "", &file, &range)) {
+    file = ctx.sources.front();
+    range = {0, 0};
+  }
+  ctx.sink->Report(Info(diag), file, range, std::move(message));
+}
+
+void CheckParameters(const StrictContext& ctx, glslang::TIntermAggregate* function) {
+  const std::string function_name = RestoreSpelling(function->getName().c_str());
+  const std::string short_name = function_name.substr(0, function_name.find('('));
+  if (HoldsSampler(function->getType())) {
+    Report(ctx, Diag::SamplerUse, function->getLoc(), short_name,
+           fmt::format("'{}' returns a {}: samplers can only be uniforms and function "
+                       "parameters (GLSL 1.20 section 4.1.7)",
+                       short_name,
+                       function->getType().getBasicType() == glslang::EbtSampler
+                           ? "sampler"
+                           : "structure that holds a sampler"));
+  }
+  for (TIntermNode* child : function->getSequence()) {
+    glslang::TIntermAggregate* parameters = child->getAsAggregate();
+    if (parameters == nullptr || parameters->getOp() != glslang::EOpParameters) continue;
+    for (TIntermNode* node : parameters->getSequence()) {
+      glslang::TIntermSymbol* parameter = node->getAsSymbolNode();
+      if (parameter == nullptr) continue;
+      const glslang::TStorageQualifier storage = parameter->getQualifier().storage;
+      if (storage != glslang::EvqOut && storage != glslang::EvqInOut) continue;
+      const std::string name = RestoreSpelling(parameter->getName().c_str());
+      const char* qualifier = storage == glslang::EvqOut ? "out" : "inout";
+      if (HoldsSampler(parameter->getType())) {
+        Report(ctx, Diag::SamplerUse, parameter->getLoc(), name,
+               fmt::format("parameter '{}' of '{}' is an {} {}: samplers cannot be l-values, so "
+                           "not out or inout parameters (GLSL 1.20 section 4.1.7)",
+                           name, short_name, qualifier,
+                           parameter->getType().getBasicType() == glslang::EbtSampler
+                               ? "sampler"
+                               : "structure that holds a sampler"));
+      } else if (ctx.version == 110 && parameter->getType().isArray()) {
+        Report(ctx, Diag::ArrayOperand, parameter->getLoc(), name,
+               fmt::format("parameter '{}' of '{}' is an {} array: in GLSL 1.10 arrays are not "
+                           "l-values (section 5.8), so not out or inout parameters",
+                           name, short_name, qualifier));
+      }
+    }
+  }
+}
+
+// 1.20 6.1: a prototype (or definition) inside a function body: `type name (` at the start
+// of a statement, where `type` is a built-in type or a structure declared earlier.
+void CheckLocalPrototypes(const StrictContext& ctx) {
+  static const std::set<std::string_view> kTypes = {
+      "void",   "float",  "int",    "bool",   "vec2",   "vec3",   "vec4",   "ivec2",
+      "ivec3",  "ivec4",  "bvec2",  "bvec3",  "bvec4",  "mat2",   "mat3",   "mat4",
+      "mat2x2", "mat2x3", "mat2x4", "mat3x2", "mat3x3", "mat3x4", "mat4x2", "mat4x3",
+      "mat4x4"};
+  for (size_t index = 0; index < ctx.sources.size(); ++index) {
+    const std::vector<Token> tokens = Tokenize(ctx.sources[index]->text());
+    std::set<std::string_view> structs;
+    int depth = 0;
+    bool statement_start = true;
+    for (size_t i = 0; i < tokens.size(); ++i) {
+      std::string_view t = tokens[i].text;
+      if (t == "struct" && i + 1 < tokens.size()) structs.insert(tokens[i + 1].text);
+      const bool type = kTypes.count(t) > 0 || structs.count(t) > 0;
+      if (depth > 0 && statement_start && type && i + 2 < tokens.size() &&
+          tokens[i + 1].kind == Token::Identifier && tokens[i + 2].text == "(") {
+        const Token& name = tokens[i + 1];
+        ctx.sink->Report(
+            Info(Diag::LocalFunction), ctx.sources[index],
+            {name.offset, static_cast<uint32_t>(name.offset + name.text.size())},
+            fmt::format("function '{}' is declared inside a function: function declarations "
+                        "must be at global scope (GLSL 1.20 section 6.1)",
+                        name.text));
+      }
+      if (t == "{") ++depth;
+      if (t == "}" && depth > 0) --depth;
+      statement_start = t == ";" || t == "{" || t == "}";
+    }
+  }
+}
+
+}  // namespace
+
+void CheckFunctions(const StrictContext& ctx) {
+  if (ctx.version >= 120) CheckLocalPrototypes(ctx);
+  TIntermNode* root = ctx.ast.getTreeRoot();
+  glslang::TIntermAggregate* top = root != nullptr ? root->getAsAggregate() : nullptr;
+  if (top == nullptr) return;
+  for (TIntermNode* child : top->getSequence()) {
+    glslang::TIntermAggregate* function = child->getAsAggregate();
+    if (function != nullptr && function->getOp() == glslang::EOpFunction) {
+      CheckParameters(ctx, function);
+    }
+  }
+}
+
+}  // namespace arbiter::glsl
