@@ -1,4 +1,5 @@
-# arbiter_add_shaders(): check (and translate) shaders as build steps, one step per shader.
+# arbiter_add_shaders(): check (and translate) shaders as build steps, one step per shader;
+# arbiter_add_program() (at the end): shaders checked together as one program.
 #
 #   arbiter_add_shaders(TARGET <target> SOURCES <files...>
 #                       [TRANSLATE_TO <dir>] [LIMITS <profile>] [WERROR])
@@ -123,4 +124,60 @@ function(arbiter_add_shaders)
 
   add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
   set_property(TARGET ${ARG_TARGET} PROPERTY ARBITER_OUTPUTS ${outputs})
+endfunction()
+
+# arbiter_add_program(): check shaders as one program (`arbiter check --link`), one build step.
+#
+#   arbiter_add_program(TARGET <target> SHADERS <files...> [LIMITS <profile>] [WERROR])
+#
+# The shaders (GLSL, of one or both stages; each file one shader object, its stage from its
+# name) are linked as glLinkProgram links them: main() and every called function defined, the
+# varyings, uniforms and samplers of the stages agreeing, the program within the limits. The
+# step touches ${CMAKE_CURRENT_BINARY_DIR}/arbiter/<target>.program.stamp when the program
+# links, depends on every shader and on arbiter, and adds the custom target <target> (built by
+# ALL). LIMITS and WERROR as for arbiter_add_shaders.
+function(arbiter_add_program)
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "WERROR" "TARGET;LIMITS" "SHADERS")
+  if(ARG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "arbiter_add_program: unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT ARG_TARGET OR NOT ARG_SHADERS)
+    message(FATAL_ERROR "arbiter_add_program: TARGET and SHADERS are required")
+  endif()
+  if(NOT TARGET arbiter::arbiter)
+    message(FATAL_ERROR "arbiter_add_program: no arbiter::arbiter target (find_package(arbiter))")
+  endif()
+  set(flags --link)
+  set(depends "")
+  if(ARG_LIMITS)
+    set(limits "${ARG_LIMITS}")
+    if(NOT limits MATCHES "^(spec-min|mesa)$")
+      cmake_path(ABSOLUTE_PATH limits BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+      list(APPEND depends "${limits}")
+    endif()
+    list(APPEND flags --limits "${limits}")
+  endif()
+  if(ARG_WERROR)
+    list(APPEND flags --Werror)
+  endif()
+  set(paths "")
+  foreach(source IN LISTS ARG_SHADERS)
+    cmake_path(ABSOLUTE_PATH source BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}"
+               NORMALIZE OUTPUT_VARIABLE path)
+    if(NOT EXISTS "${path}")
+      message(FATAL_ERROR "arbiter_add_program: no such shader: ${source}")
+    endif()
+    list(APPEND paths "${path}")
+  endforeach()
+  set(stamp "${CMAKE_CURRENT_BINARY_DIR}/arbiter/${ARG_TARGET}.program.stamp")
+  add_custom_command(
+    OUTPUT "${stamp}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/arbiter"
+    COMMAND arbiter::arbiter check ${flags} ${paths}
+    COMMAND "${CMAKE_COMMAND}" -E touch "${stamp}"
+    DEPENDS ${paths} "$<TARGET_FILE:arbiter::arbiter>" ${depends}
+    COMMENT "arbiter check --link ${ARG_TARGET}"
+    VERBATIM)
+  add_custom_target(${ARG_TARGET} ALL DEPENDS "${stamp}")
+  set_property(TARGET ${ARG_TARGET} PROPERTY ARBITER_OUTPUTS "${stamp}")
 endfunction()

@@ -20,9 +20,9 @@ build_dir, source_dir, cmake, cxx = sys.argv[1:5]
 failures = []
 # One arbiter step in `ninja -v` output: ... && "<prefix>/bin/arbiter" check ... (quoted: the
 # prefix has a space).
-STEP = re.compile(r'bin/arbiter"? (check|translate) ')
+STEP = re.compile(r'bin/arbiter"? (check --link|check|translate) ')
 # The step Make announces: "[ 50%] arbiter translate shaders/water.vp".
-MAKE_STEP = re.compile(r"^\[ *\d+%\] arbiter (check|translate) ", re.M)
+MAKE_STEP = re.compile(r"^\[ *\d+%\] arbiter (check --link|check|translate) ", re.M)
 
 
 def check(condition, what):
@@ -130,10 +130,10 @@ try:
          "configure examples/cmake-pipeline (Ninja)")
     out = must([cmake, "--build", ninja_build, "--", "-v"], "build examples/cmake-pipeline (Ninja)")
     ran = len(STEP.findall(out))
-    check(ran == 4, f"first build runs 4 arbiter steps (ran {ran})")
+    check(ran == 5, f"first build runs 5 arbiter steps (ran {ran})")
     outputs = ["glsl/water.vert", "glsl/water.vert.bindings.json", "glsl/water.frag",
                "glsl/water.frag.bindings.json", "arbiter/shaders/sky.vert.stamp",
-               "arbiter/shaders/sky.frag.stamp"]
+               "arbiter/shaders/sky.frag.stamp", "arbiter/sky.program.stamp"]
     for rel in outputs:
         check(os.path.isfile(os.path.join(ninja_build, rel)), f"build wrote {rel}")
     with open(os.path.join(ninja_build, "glsl/water.vert")) as f:
@@ -141,12 +141,14 @@ try:
     out = must([cmake, "--build", ninja_build], "second build")
     check("no work to do" in out, "second build: ninja has no work to do")
 
-    for shader, verb in (("sky.frag", "check"), ("water.vp", "translate")):
+    # sky.frag: its own check and the program's; water.vp: its translation alone.
+    for shader, verbs in (("sky.frag", ["check", "check --link"]), ("water.vp", ["translate"])):
         touch(os.path.join(project, "shaders", shader))
         out = must([cmake, "--build", ninja_build, "--", "-v"], f"build after touching {shader}")
         steps = [line for line in out.splitlines() if STEP.search(line)]
-        check(len(steps) == 1 and STEP.search(steps[0]).group(1) == verb and shader in steps[0],
-              f"touching {shader} re-runs its {verb} step alone (ran {len(steps)} steps)")
+        check(sorted(STEP.search(line).group(1) for line in steps) == sorted(verbs) and
+              all(shader in line for line in steps),
+              f"touching {shader} re-runs its steps {verbs} alone (ran {len(steps)} steps)")
         out = must([cmake, "--build", ninja_build], "build again")
         check("no work to do" in out, f"after {shader}'s step: no work to do")
 
@@ -170,6 +172,8 @@ try:
           "the build shows the ARB diagnostic with its position")
     check(not os.path.exists(os.path.join(broken_build, "arbiter/shaders/sky.frag.stamp")),
           "no stamp for the rejected GLSL shader")
+    check(not os.path.exists(os.path.join(broken_build, "arbiter/sky.program.stamp")),
+          "no stamp for the program of the rejected shader")
     check(not os.path.exists(os.path.join(broken_build, "glsl/water.frag")) and
           not os.path.exists(os.path.join(broken_build, "glsl/water.frag.bindings.json")),
           "no translation for the rejected ARB program")
@@ -184,7 +188,7 @@ try:
           f"-DCMAKE_PREFIX_PATH={prefix}"], "configure examples/cmake-pipeline (Make)")
     out = must([cmake, "--build", make_build], "build with Make")
     ran = len(MAKE_STEP.findall(out))
-    check(ran == 4, f"Make runs 4 arbiter steps (ran {ran})")
+    check(ran == 5, f"Make runs 5 arbiter steps (ran {ran})")
     for rel in outputs:
         check(os.path.isfile(os.path.join(make_build, rel)), f"Make build wrote {rel}")
     out = must([cmake, "--build", make_build], "second Make build")
@@ -192,8 +196,8 @@ try:
     touch(os.path.join(project, "shaders", "sky.vert"))
     out = must([cmake, "--build", make_build], "Make build after touching sky.vert")
     steps = MAKE_STEP.findall(out)
-    check(steps == ["check"] and "sky.vert" in out,
-          f"Make: touching sky.vert re-runs its check alone (ran {len(steps)} steps)")
+    check(sorted(steps) == ["check", "check --link"] and "sky.vert" in out,
+          f"Make: touching sky.vert re-runs its check and the program's (ran {len(steps)} steps)")
 
     # --- examples/api-check: the C++ libraries ----------------------------------------------
     api_build = os.path.join(tmp, "api-check")
