@@ -32,6 +32,7 @@ struct MessageRule {
 };
 
 constexpr MessageRule kCompileRules[] = {
+    {"extension not supported", Diag::ExtensionUnsupported},
     // bison's "memory exhausted": its stack of YYMAXDEPTH (10000) entries overflowed.
     {"memory exhausted", Diag::NestingTooDeep},
     {"syntax error", Diag::SyntaxError},
@@ -180,6 +181,9 @@ Diag Classify(std::string_view text, bool link, bool warning) {
     // GLSL 1.10 3.6 reserves identifiers (and 3.3 macro names) containing "__"; glslang
     // only warns (later versions relaxed it).
     if (text.find("consecutive underscores") != std::string_view::npos) return Diag::ReservedWord;
+    if (text.find("extension not supported") != std::string_view::npos) {
+      return Diag::ExtensionUnsupported;
+    }
     return Diag::CompileWarning;
   }
   for (const MessageRule& rule : kCompileRules) {

@@ -101,7 +101,10 @@ void ReadVersion(const SourceFile& file, const std::vector<Directive>& directive
 void ReadExtensions(const SourceFile& file, const std::vector<Directive>& directives,
                     const CheckOptions& options, std::string* text, PreparedShader* out,
                     compiler::DiagnosticSink* sink) {
+  int conditional_depth = 0;  // inside #if groups, whose values glslang knows, not this scan
   for (const Directive& d : directives) {
+    if (d.name == "if" || d.name == "ifdef" || d.name == "ifndef") ++conditional_depth;
+    if (d.name == "endif" && conditional_depth > 0) --conditional_depth;
     if (d.name != "extension") continue;
     // "#extension name : behavior"; anything else is glslang's to report.
     if (d.words.size() != 3 || d.words[0].kind != Token::Identifier || d.words[1].text != ":" ||
@@ -115,6 +118,9 @@ void ReadExtensions(const SourceFile& file, const std::vector<Directive>& direct
     if (!wanted && behavior != "disable") continue;  // glslang reports the behaviour
     const Extension* extension = FindExtension(name);
     const bool available = extension != nullptr && ProfileHas(options.profile, *extension);
+    // In a conditional group the directive may not be compiled: glslang judges it there (its
+    // "extension not supported" gets this code, info_log.cpp).
+    if (extension == nullptr && conditional_depth > 0) continue;
     if (!available) {
       // 3.3: require: "give an error on the #extension if the extension is not supported";
       // enable, warn, disable: "warn on the #extension if the extension is not supported".
@@ -214,9 +220,10 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
   const Extension* rectangle = FindExtension("GL_ARB_texture_rectangle");
   const bool has_rectangle = rectangle != nullptr && ProfileHas(options.profile, *rectangle);
   if (has_rectangle) out.preamble += "#extension GL_ARB_texture_rectangle : enable\n";
-  // 3.3: each supported extension defines a macro of its name; glslang defines those it knows.
+  // 3.3: each supported extension defines a macro of its name (glslang defines some of those
+  // it knows, as 1 too: an identical definition is no redefinition).
   for (const Extension& e : KnownExtensions()) {
-    if (e.support != ExtensionSupport::Native && ProfileHas(options.profile, e)) {
+    if (ProfileHas(options.profile, e)) {
       out.preamble += fmt::format("#define {} 1\n", e.name);
     }
   }
