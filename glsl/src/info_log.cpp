@@ -45,6 +45,7 @@ constexpr MessageRule kCompileRules[] = {
     {"cannot convert", Diag::TypeMismatch},
     {"wrong operand types", Diag::TypeMismatch},
     {"convert no return value", Diag::TypeMismatch},
+    {"index out of range", Diag::ArraySize},
     {"no matching overloaded function", Diag::NoMatchingFunction},
     {"constructor", Diag::Constructor},
     {"l-value", Diag::LValue},
@@ -230,8 +231,9 @@ constexpr Relaxation kRelaxations[] = {
     // 5.5, 5.6: "Behavior is undefined if the index is greater than or equal to the size of
     // the vector" (likewise for matrix columns): not an error (4.1.9 makes it one for arrays
     // only). glslang clamps the index and goes on.
-    {"vector index out of range", false, false, Diag::IndexOutOfRange},
-    {"matrix index out of range", false, false, Diag::IndexOutOfRange},
+    // 1.20 5.5, 5.6 make a constant index out of range an error ("is illegal").
+    {"vector index out of range", false, false, Diag::IndexOutOfRange, 110},
+    {"matrix index out of range", false, false, Diag::IndexOutOfRange, 110},
     // 7.2: only assigning both gl_FragColor and gl_FragData is an error; glslang counts any
     // use. strict_builtins.cpp checks the static writes instead.
     {"Cannot use both gl_FragColor and gl_FragData", true, false, Diag::CompileError},

@@ -244,26 +244,34 @@ LinkResult LinkProgram(const Sources& vertex, const Sources& fragment, const Lin
                        compiler::DiagnosticSink* sink) {
   LinkResult result;
   int errors_before = Errors(*sink);
-  if (vertex.empty() || fragment.empty()) {
-    sink->Report(Info(Diag::LinkError), nullptr, {0, 0},
-                 "a program needs a vertex shader and a fragment shader");
+  if (vertex.empty() && fragment.empty()) {
+    sink->Report(Info(Diag::LinkError), nullptr, {0, 0}, "a program needs a shader");
     return result;
   }
   // Each stage's own diagnostics; a vertex shader that never writes gl_Position does not link.
+  // A stage not given is reflected as empty: a one-stage program gets the limits alone.
   CheckOptions check = options.check;
   check.link = true;
   if (check.profile == nullptr) check.profile = options.profile;
-  bool vertex_ok = CheckShader(Stage::Vertex, vertex, check, sink).ok;
-  bool fragment_ok = CheckShader(Stage::Fragment, fragment, check, sink).ok;
+  bool vertex_ok = vertex.empty() || CheckShader(Stage::Vertex, vertex, check, sink).ok;
+  bool fragment_ok = fragment.empty() || CheckShader(Stage::Fragment, fragment, check, sink).ok;
 
   CompiledProgram program(vertex, fragment, &check);
-  result.vertex.ok = program.Reflect(Stage::Vertex, &result.vertex);
-  result.fragment.ok = program.Reflect(Stage::Fragment, &result.fragment);
+  result.vertex.ok = vertex.empty() || program.Reflect(Stage::Vertex, &result.vertex);
+  result.fragment.ok = fragment.empty() || program.Reflect(Stage::Fragment, &result.fragment);
+  result.fragment.stage = Stage::Fragment;
   if (result.vertex.ok && result.fragment.ok) {
-    LinkContext ctx{vertex, fragment, result.vertex, result.fragment, options.profile, sink};
+    LinkContext ctx{vertex.empty() ? fragment : vertex,
+                    fragment.empty() ? vertex : fragment,
+                    result.vertex,
+                    result.fragment,
+                    options.profile,
+                    sink};
     int before = Errors(*sink);
-    CheckVaryings(ctx);
-    CheckUniforms(ctx);
+    if (!vertex.empty() && !fragment.empty()) {
+      CheckVaryings(ctx);
+      CheckUniforms(ctx);
+    }
     CheckLimits(ctx);
     // glslang's cross-stage messages name no variable and repeat the rules above; they are
     // reported only when those found nothing, so that no program glslang refuses passes.
@@ -295,15 +303,11 @@ bool LinkShaders(const std::vector<ShaderObject>& objects, const LinkOptions& op
     Sources& strings = object.stage == Stage::Vertex ? vertex_strings : fragment_strings;
     strings.insert(strings.end(), object.strings.begin(), object.strings.end());
   }
-  if (counts[0] == 1 && counts[1] == 1) {
+  if (counts[0] <= 1 && counts[1] <= 1) {
     return LinkProgram(vertex_strings, fragment_strings, options, sink).ok;
   }
   CheckOptions check = options.check;
   if (check.profile == nullptr) check.profile = options.profile;
-  if (objects.size() == 1) {
-    check.link = true;
-    return CheckShader(objects.front().stage, objects.front().strings, check, sink).ok;
-  }
   // Several objects of a stage: each compiled as an object, then glslang links them all.
   check.link = false;
   for (const ShaderObject& object : objects) CheckShader(object.stage, object.strings, check, sink);

@@ -367,13 +367,25 @@ TEST(LinkStages, CompileErrorsAreReportedAndStopTheProgramChecks) {
   EXPECT_FALSE(l.result.fragment.ok);
 }
 
-TEST(LinkStages, BothStagesAreNeeded) {
+// A program may have one stage (GL 2.0 2.15.2: a program object with no vertex shader runs the
+// fixed-function vertex stage); it still gets its stage's limits. No shader at all is no program.
+TEST(LinkStages, OneStageIsAProgram) {
   compiler::SourceFile vertex("vs", kMain);
+  {
+    compiler::DiagnosticSink sink(0);
+    EXPECT_TRUE(LinkProgram({&vertex}, {}, LinkOptions{}, &sink).ok);
+  }
+  compiler::SourceFile samplers("fs",
+                                "uniform sampler2D s[40];\n"
+                                "void main() { gl_FragColor = texture2D(s[0], vec2(0.0)); }\n");
   compiler::DiagnosticSink sink(0);
-  LinkResult result = LinkProgram({&vertex}, {}, LinkOptions{}, &sink);
-  EXPECT_FALSE(result.ok);
-  ASSERT_EQ(sink.diagnostics().size(), 1u);
-  EXPECT_EQ(sink.diagnostics()[0].info->code, "glsl-link-error");
+  EXPECT_FALSE(LinkProgram({}, {&samplers}, LinkOptions{}, &sink).ok);
+  ASSERT_EQ(sink.error_count(), 1);
+  EXPECT_EQ(sink.diagnostics()[0].info->code, "glsl-link-limit-samplers");
+  compiler::DiagnosticSink none(0);
+  EXPECT_FALSE(LinkProgram({}, {}, LinkOptions{}, &none).ok);
+  ASSERT_EQ(none.diagnostics().size(), 1u);
+  EXPECT_EQ(none.diagnostics()[0].info->code, "glsl-link-error");
 }
 
 TEST(LinkStages, SeveralStringsPerStage) {

@@ -37,7 +37,8 @@ struct LinkResult {
 // checks them as one program: varyings the fragment shader reads are declared and written by
 // the vertex shader with the same type, uniforms and samplers declared in both stages agree,
 // and the program fits the limits of `options`. glslang's own link errors are reported when
-// arbiter's rules found none. Both lists must be non-empty. Thread-safe.
+// arbiter's rules found none. One list may be empty: a one-stage program gets its stage's
+// limits. Thread-safe.
 LinkResult LinkProgram(const std::vector<const compiler::SourceFile*>& vertex,
                        const std::vector<const compiler::SourceFile*>& fragment,
                        const LinkOptions& options, compiler::DiagnosticSink* sink);
@@ -51,7 +52,7 @@ struct ShaderObject {
 // Checks shader objects of one or both stages as one program, as glLinkProgram judges it: each
 // object compiled (CheckShader), then linked. A stage may have several objects: main() and
 // every called function must be defined in one of them (glslang merges the stage's objects).
-// With one object of each stage the program gets LinkProgram's cross-stage rules; with more
+// With at most one object of each stage the program gets LinkProgram's rules; with more
 // objects of a stage, glslang's link of the merged stage decides. `objects` must be
 // non-empty. Thread-safe.
 bool LinkShaders(const std::vector<ShaderObject>& objects, const LinkOptions& options,
