@@ -143,6 +143,33 @@ TEST(DiagnosticSinkTest, PromoteWarningsCountsWarningsDroppedPastTheLimit) {
   EXPECT_EQ(sink.dropped(), 2);
 }
 
+// -Wno-<code> removes that code's warnings, -Werror=<code> makes them errors; other codes
+// and errors are untouched, and -Werror still promotes the rest.
+TEST(DiagnosticSinkTest, WarningPolicyPerCode) {
+  const DiagnosticInfo other{"test-other", Severity::Warning, "another warning", ""};
+  DiagnosticSink sink;
+  sink.Report(kWarning, &File(), {0, 1}, "w1");
+  sink.Report(other, &File(), {0, 1}, "o1");
+  sink.Report(kError, &File(), {0, 1}, "e1");
+  WarningPolicy policy;
+  policy.codes[std::string(kWarning.code)] = WarningAction::Off;
+  policy.codes["test-other"] = WarningAction::Error;
+  sink.ApplyWarningPolicy(policy);
+  EXPECT_EQ(Messages(sink), (std::vector<std::string>{"o1", "e1"}));
+  EXPECT_EQ(sink.error_count(), 2);
+  EXPECT_EQ(sink.warning_count(), 0);
+
+  DiagnosticSink kept;
+  kept.Report(kWarning, &File(), {0, 1}, "w1");
+  kept.Report(other, &File(), {0, 1}, "o1");
+  WarningPolicy werror;
+  werror.werror = true;
+  werror.codes["test-other"] = WarningAction::Off;
+  kept.ApplyWarningPolicy(werror);
+  EXPECT_EQ(Messages(kept), std::vector<std::string>{"w1"});
+  EXPECT_EQ(kept.error_count(), 1);
+}
+
 TEST(DiagnosticSinkTest, PromoteWarningsTwiceChangesNothing) {
   DiagnosticSink sink(/*error_limit=*/3);
   sink.Report(kWarning, &File(), {0, 1}, "w1");
