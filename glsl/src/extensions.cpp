@@ -7,8 +7,8 @@ namespace arbiter::glsl {
 
 const std::vector<Extension>& KnownExtensions() {
   static const std::vector<Extension> table = {
-#define GLSL_EXTENSION(name, spelling, support, mesa, spec) \
-  Extension{spelling, ExtensionSupport::support, mesa, spec},
+#define GLSL_EXTENSION(name, spelling, support, mesa, vertex_preamble, spec) \
+  Extension{spelling, ExtensionSupport::support, mesa, vertex_preamble, spec},
 #include "extensions.def"
 #undef GLSL_EXTENSION
   };

@@ -14,6 +14,8 @@ struct Extension {
   std::string_view name;
   ExtensionSupport support;
   bool mesa;
+  // Added to a vertex shader's preamble when the shader enables it (extensions.def).
+  std::string_view vertex_preamble;
   std::string_view spec;
 };
 

@@ -98,7 +98,7 @@ void ReadVersion(const SourceFile& file, const std::vector<Directive>& directive
 
 // The #extension directives of one string: checked against the target's extensions; those
 // glslang must not see are blanked in `text`.
-void ReadExtensions(const SourceFile& file, const std::vector<Directive>& directives,
+void ReadExtensions(Stage stage, const SourceFile& file, const std::vector<Directive>& directives,
                     const CheckOptions& options, std::string* text, PreparedShader* out,
                     compiler::DiagnosticSink* sink) {
   int conditional_depth = 0;  // inside #if groups, whose values glslang knows, not this scan
@@ -138,6 +138,7 @@ void ReadExtensions(const SourceFile& file, const std::vector<Directive>& direct
       Blank(text, d.hash, d.end);
       continue;
     }
+    if (wanted && stage == Stage::Vertex) out->enabled_preamble += extension->vertex_preamble;
     switch (extension->support) {
       case ExtensionSupport::Native:
         break;
@@ -211,7 +212,7 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
       // #version belongs to the first string (3.3: before anything else).
       if (i == 0) ReadVersion(file, directives, &text, &out, sink);
       if (!out.checked) return out;
-      ReadExtensions(file, directives, options, &text, &out, sink);
+      ReadExtensions(stage, file, directives, options, &text, &out, sink);
     }
     out.texts.push_back(PrepareForGlslang(text));
   }
@@ -247,6 +248,7 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
     out.preamble += "#extension GL_GOOGLE_include_directive : enable\n";
     out.include_dirs = options.preprocessor.include_dirs;
   }
+  out.preamble += out.enabled_preamble;
   out.preamble += DefineLines(options.preprocessor.defines);
   for (char c : out.preamble) out.preamble_generated_lines += c == '\n';
   if (options.preprocessor.preamble != nullptr) {

@@ -41,6 +41,8 @@ struct PreparedShader {
   // directive), from the including file's directory and then `include_dirs`.
   bool include = false;
   std::vector<std::string> include_dirs;
+  // The preamble text of the extensions the shader enables (Extension::vertex_preamble).
+  std::string enabled_preamble;
   // glslang's preamble (placed after #version): arbiter's lines, then --preamble's file.
   std::string preamble;
   // Lines of `preamble` before the text of --preamble's file, and that file (or nullptr).

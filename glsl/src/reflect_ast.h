@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "arbiter/glsl/check.h"
 #include "arbiter/compiler/source.h"
+#include "arbiter/glsl/check.h"
 #include "arbiter/glsl/reflect.h"
 
 class TIntermNode;

@@ -27,7 +27,7 @@ struct Macro {
 using Macros = std::map<std::string, Macro, std::less<>>;
 
 // The macro a #define defines; its name is d.words[0].
-Macro Define(const Directive& d) {
+Macro MacroOf(const Directive& d) {
   const Token& name = d.words[0];
   const std::span<const Token> rest = std::span(d.words).subspan(1);
   Macro macro;
@@ -194,7 +194,7 @@ Macros PreambleMacros(const std::vector<Directive>& directives) {
     if (d.name == "undef") {
       macros.erase(std::string(d.words[0].text));
     } else if (d.name == "define") {
-      macros[std::string(d.words[0].text)] = Define(d);
+      macros[std::string(d.words[0].text)] = MacroOf(d);
     }
   }
   return macros;
@@ -208,47 +208,64 @@ class Conditionals {
       : ctx_(ctx), file_(file), macros_(std::move(macros)) {}
 
   void Follow(const Directive& d) {
+    if (d.name == "define" || d.name == "undef") {
+      FollowMacro(d);
+    } else if (d.name == "ifdef" || d.name == "ifndef" || d.name == "if") {
+      Open(d);
+    } else if (!groups_.empty()) {
+      Continue(d);
+    }
+  }
+
+ private:
+  // #define and #undef count in the groups that are compiled.
+  void FollowMacro(const Directive& d) {
     const std::vector<Token>& words = d.words;
     if (d.name == "define" && !Active() && InUnknown()) {
       // Perhaps defined: its uses make a condition unknown, as a function-like macro does.
       if (!words.empty()) macros_[std::string(words[0].text)] = Macro{true, {}};
     } else if (d.name == "define" && Active()) {
       if (!words.empty() && words[0].kind == Token::Identifier) {
-        macros_[std::string(words[0].text)] = Define(d);
+        macros_[std::string(words[0].text)] = MacroOf(d);
       }
     } else if (d.name == "undef" && Active()) {
       if (!words.empty()) macros_.erase(std::string(words[0].text));
-    } else if (d.name == "ifdef" || d.name == "ifndef") {
-      bool defined = !words.empty() && macros_.count(words[0].text) > 0;
+    }
+  }
+
+  // #if, #ifdef or #ifndef: a new group.
+  void Open(const Directive& d) {
+    const bool parent = Active();
+    if (d.name != "if") {
+      bool defined = !d.words.empty() && macros_.count(d.words[0].text) > 0;
       bool value = d.name == "ifdef" ? defined : !defined;
-      bool parent = Active();
       groups_.push_back({parent, parent && value, value, !Judged()});
-    } else if (d.name == "if") {
-      bool parent = Active();
-      std::optional<bool> value;
-      if (parent && Judged()) value = Evaluate(JoinOperators(words));
-      bool unknown = !Judged() || (parent && !value);
-      groups_.push_back({parent, parent && value.value_or(false), value.value_or(true), unknown});
-    } else if (d.name == "elif" && !groups_.empty()) {
-      Group& g = groups_.back();
-      if (g.parent_active && !g.taken && !g.unknown) {
-        std::optional<bool> value = Evaluate(JoinOperators(words));
-        g.unknown = !value;
-        g.active = value.value_or(false);
-        g.taken = value.value_or(true);
-      } else {
-        g.active = false;
-      }
-    } else if (d.name == "else" && !groups_.empty()) {
-      Group& g = groups_.back();
+      return;
+    }
+    std::optional<bool> value;
+    if (parent && Judged()) value = Evaluate(JoinOperators(d.words));
+    bool unknown = !Judged() || (parent && !value);
+    groups_.push_back({parent, parent && value.value_or(false), value.value_or(true), unknown});
+  }
+
+  // #elif, #else or #endif of the innermost group.
+  void Continue(const Directive& d) {
+    Group& g = groups_.back();
+    if (d.name == "elif" && g.parent_active && !g.taken && !g.unknown) {
+      std::optional<bool> value = Evaluate(JoinOperators(d.words));
+      g.unknown = !value;
+      g.active = value.value_or(false);
+      g.taken = value.value_or(true);
+    } else if (d.name == "elif") {
+      g.active = false;
+    } else if (d.name == "else") {
       g.active = g.parent_active && !g.taken && !g.unknown;
       g.taken = true;
-    } else if (d.name == "endif" && !groups_.empty()) {
+    } else if (d.name == "endif") {
       groups_.pop_back();
     }
   }
 
- private:
   bool Active() const { return groups_.empty() || groups_.back().active; }
   bool Judged() const { return groups_.empty() || !groups_.back().unknown; }
   bool InUnknown() const {
@@ -290,7 +307,7 @@ std::string EndLinesAtCarriageReturns(std::string_view source, std::string blank
 // Whether a form feed or vertical tab comes before the directive's name on its line. This rule
 // has taken such a line for text (glslang and Directives take it for a directive); kept so
 // that reading the directives through Directives changes nothing.
-bool BlankBeforeNameIsFormFeed(std::string_view text, const Directive& d) {
+bool FormFeedBeforeName(std::string_view text, const Directive& d) {
   const size_t line = text.rfind('\n', d.hash);
   const size_t start = line == std::string_view::npos ? 0 : line + 1;
   return !d.name.empty() &&
@@ -307,7 +324,7 @@ void CheckConditionals(const StrictContext& ctx) {
         EndLinesAtCarriageReturns(ctx.sources[index]->text(), BlankedText(ctx, index));
     Conditionals conditionals(ctx, ctx.sources[index], preamble_macros);
     for (const Directive& d : Directives(text)) {
-      if (!BlankBeforeNameIsFormFeed(text, d)) conditionals.Follow(d);
+      if (!FormFeedBeforeName(text, d)) conditionals.Follow(d);
     }
   }
 }

@@ -66,7 +66,7 @@ void CheckFloatLiterals(const StrictContext& ctx) {
     const compiler::SourceFile* file = ctx.sources[index];
     const std::string& text = BlankedText(ctx, index);
     for (const Token& t : AllTokens(text)) {
-      // After a letter or a '.', digits are no literal of their own ('a.5e50' is a field).
+      // Digits right after a name or a '.' belong to them ('a.5e50', '1..5'): no literal.
       const char before = t.offset > 0 ? text[t.offset - 1] : ' ';
       if (t.kind != Token::Number || IsIdentChar(before) || before == '.') continue;
       // The literal's digits, point and exponent: glslang reports a suffix itself.
