@@ -563,8 +563,8 @@ void CheckVectorSizes(const StrictContext& ctx) {
     for (size_t i = 0; i + 3 < tokens.size(); ++i) {
       std::string_view type = tokens[i + 1].text;
       const bool vector = type.size() == 4 || type.size() == 5
-                              ? (type.substr(type.size() - 4, 3) == "vec" &&
-                                 type.back() >= '2' && type.back() <= '4')
+                              ? (type.substr(type.size() - 4, 3) == "vec" && type.back() >= '2' &&
+                                 type.back() <= '4')
                               : false;
       if (tokens[i].text != "[" || !vector || tokens[i + 2].text != "(") continue;
       int depth = 0;

@@ -7,12 +7,18 @@
 //   only function parameters and uniforms, which implies the same; Mesa applies it to both;
 // - 1.20 6.1: "Function declarations (prototypes) cannot occur inside of functions; they must
 //   be at global scope". glslang accepts them in a function body.
-// The first two are read from the AST's function definitions, the last from the tokens.
+// - 1.20 4.2: "When a function name is redeclared in a nested scope, it hides all functions
+//   declared with that name in the outer scope", and the built-ins are in a scope outside the
+//   global one (1.10 6.1: once a built-in is redeclared, "the linker will only attempt to
+//   resolve that call within the set of shaders"): a shader that declares `exp` cannot call
+//   the built-in `exp(float)`. glslang overloads the two.
+// The first two are read from the AST's function definitions, the others from the tokens.
 #include <fmt/format.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include <set>
 #include <string>
+#include <utility>
 
 #include "../source_text.h"
 #include "strict.h"
@@ -87,10 +93,9 @@ void CheckParameters(const StrictContext& ctx, glslang::TIntermAggregate* functi
 // of a statement, where `type` is a built-in type or a structure declared earlier.
 void CheckLocalPrototypes(const StrictContext& ctx) {
   static const std::set<std::string_view> kTypes = {
-      "void",   "float",  "int",    "bool",   "vec2",   "vec3",   "vec4",   "ivec2",
-      "ivec3",  "ivec4",  "bvec2",  "bvec3",  "bvec4",  "mat2",   "mat3",   "mat4",
-      "mat2x2", "mat2x3", "mat2x4", "mat3x2", "mat3x3", "mat3x4", "mat4x2", "mat4x3",
-      "mat4x4"};
+      "void",   "float",  "int",    "bool",   "vec2",   "vec3",   "vec4",  "ivec2",  "ivec3",
+      "ivec4",  "bvec2",  "bvec3",  "bvec4",  "mat2",   "mat3",   "mat4",  "mat2x2", "mat2x3",
+      "mat2x4", "mat3x2", "mat3x3", "mat3x4", "mat4x2", "mat4x3", "mat4x4"};
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const std::vector<Token> tokens = Tokenize(ctx.sources[index]->text());
     std::set<std::string_view> structs;
@@ -117,6 +122,64 @@ void CheckLocalPrototypes(const StrictContext& ctx) {
   }
 }
 
+// Collects the lines of calls to user functions, by name ("exp" for "exp(f1;f1;").
+class UserCalls : public glslang::TIntermTraverser {
+ public:
+  std::set<std::pair<std::string, int>> calls;  // (name, line) of each user call
+  bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
+    if (node->getOp() == glslang::EOpFunctionCall) {
+      std::string name = node->getName().c_str();
+      calls.emplace(name.substr(0, name.find('(')), node->getLoc().line);
+    }
+    return true;
+  }
+};
+
+// Calls of a name the shader declares as a function that glslang resolved to a built-in of
+// that name: no user call of the name on the call's line.
+void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
+  UserCalls user;
+  root->traverse(&user);
+  for (size_t index = 0; index < ctx.sources.size(); ++index) {
+    const compiler::SourceFile* file = ctx.sources[index];
+    const std::vector<Token> tokens = Tokenize(file->text());
+    std::set<std::string_view> declared;  // functions the shader declares at global scope
+    int depth = 0;
+    for (size_t i = 0; i + 2 < tokens.size(); ++i) {
+      if (tokens[i].text == "{") ++depth;
+      if (tokens[i].text == "}" && depth > 0) --depth;
+      if (depth == 0 && tokens[i].kind == Token::Identifier &&
+          tokens[i + 1].kind == Token::Identifier && tokens[i + 2].text == "(" &&
+          tokens[i].text != "return") {
+        declared.insert(tokens[i + 1].text);
+      }
+    }
+    if (declared.empty()) continue;
+    depth = 0;
+    for (size_t i = 0; i + 1 < tokens.size(); ++i) {
+      if (tokens[i].text == "{") ++depth;
+      if (tokens[i].text == "}" && depth > 0) --depth;
+      const Token& t = tokens[i];
+      // `type name (` in a body is a local prototype (CheckLocalPrototypes), not a call.
+      const bool declaration =
+          i > 0 && tokens[i - 1].kind == Token::Identifier && tokens[i - 1].text != "return";
+      if (depth == 0 || t.kind != Token::Identifier || tokens[i + 1].text != "(" ||
+          declared.count(t.text) == 0 || declaration) {
+        continue;
+      }
+      const compiler::LineCol at = file->Locate(t.offset);
+      // glslang's string numbering is the sources' index: a user call is on this line.
+      if (user.calls.count({std::string(t.text), static_cast<int>(at.line)}) > 0) continue;
+      ctx.sink->Report(Info(Diag::NoMatchingFunction), file,
+                       {t.offset, static_cast<uint32_t>(t.offset + t.text.size())},
+                       fmt::format("no function '{}' of the shader matches this call, and the "
+                                   "shader's '{}' hides the built-in functions of that name "
+                                   "(GLSL 1.20 section 4.2; 1.10 section 6.1)",
+                                   t.text, t.text));
+    }
+  }
+}
+
 }  // namespace
 
 void CheckFunctions(const StrictContext& ctx) {
@@ -130,6 +193,7 @@ void CheckFunctions(const StrictContext& ctx) {
       CheckParameters(ctx, function);
     }
   }
+  CheckHiddenBuiltins(ctx, root);
 }
 
 }  // namespace arbiter::glsl
