@@ -135,8 +135,90 @@ class UserCalls : public glslang::TIntermTraverser {
   }
 };
 
-// Calls of a name the shader declares as a function that glslang resolved to a built-in of
-// that name: no user call of the name on the call's line.
+// The built-in functions of GLSL 1.10 and 1.20 (chapter 8), by name.
+bool IsBuiltinFunction(std::string_view name) {
+  static const std::set<std::string_view> kNames = {"radians",
+                                                    "degrees",
+                                                    "sin",
+                                                    "cos",
+                                                    "tan",
+                                                    "asin",
+                                                    "acos",
+                                                    "atan",
+                                                    "pow",
+                                                    "exp",
+                                                    "log",
+                                                    "exp2",
+                                                    "log2",
+                                                    "sqrt",
+                                                    "inversesqrt",
+                                                    "abs",
+                                                    "sign",
+                                                    "floor",
+                                                    "ceil",
+                                                    "fract",
+                                                    "mod",
+                                                    "min",
+                                                    "max",
+                                                    "clamp",
+                                                    "mix",
+                                                    "step",
+                                                    "smoothstep",
+                                                    "length",
+                                                    "distance",
+                                                    "dot",
+                                                    "cross",
+                                                    "normalize",
+                                                    "ftransform",
+                                                    "faceforward",
+                                                    "reflect",
+                                                    "refract",
+                                                    "matrixCompMult",
+                                                    "outerProduct",
+                                                    "transpose",
+                                                    "lessThan",
+                                                    "lessThanEqual",
+                                                    "greaterThan",
+                                                    "greaterThanEqual",
+                                                    "equal",
+                                                    "notEqual",
+                                                    "any",
+                                                    "all",
+                                                    "not",
+                                                    "texture1D",
+                                                    "texture1DProj",
+                                                    "texture1DLod",
+                                                    "texture1DProjLod",
+                                                    "texture2D",
+                                                    "texture2DProj",
+                                                    "texture2DLod",
+                                                    "texture2DProjLod",
+                                                    "texture3D",
+                                                    "texture3DProj",
+                                                    "texture3DLod",
+                                                    "texture3DProjLod",
+                                                    "textureCube",
+                                                    "textureCubeLod",
+                                                    "shadow1D",
+                                                    "shadow2D",
+                                                    "shadow1DProj",
+                                                    "shadow2DProj",
+                                                    "shadow1DLod",
+                                                    "shadow2DLod",
+                                                    "shadow1DProjLod",
+                                                    "shadow2DProjLod",
+                                                    "dFdx",
+                                                    "dFdy",
+                                                    "fwidth",
+                                                    "noise1",
+                                                    "noise2",
+                                                    "noise3",
+                                                    "noise4"};
+  return kNames.count(name) > 0;
+}
+
+// Calls of a built-in's name that the shader also declares as a function, which glslang
+// resolved to the built-in: no user call of the name on the call's line.
 void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
   UserCalls user;
   root->traverse(&user);
@@ -150,7 +232,7 @@ void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
       if (tokens[i].text == "}" && depth > 0) --depth;
       if (depth == 0 && tokens[i].kind == Token::Identifier &&
           tokens[i + 1].kind == Token::Identifier && tokens[i + 2].text == "(" &&
-          tokens[i].text != "return") {
+          tokens[i].text != "return" && IsBuiltinFunction(tokens[i + 1].text)) {
         declared.insert(tokens[i + 1].text);
       }
     }
