@@ -221,6 +221,9 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
   const Extension* rectangle = FindExtension("GL_ARB_texture_rectangle");
   const bool has_rectangle = rectangle != nullptr && ProfileHas(options.profile, *rectangle);
   if (has_rectangle) out.preamble += "#extension GL_ARB_texture_rectangle : enable\n";
+  // glslang's `defined` does not see its built-in macros (`#if defined __VERSION__` is false);
+  // the same name as an ordinary macro makes it true, and glslang still expands its own.
+  out.preamble += fmt::format("#define __VERSION__ {}\n", out.version);
   // 3.3: each supported extension defines a macro of its name (glslang defines some of those
   // it knows, as 1 too: an identical definition is no redefinition).
   for (const Extension& e : KnownExtensions()) {
