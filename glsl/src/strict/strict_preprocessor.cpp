@@ -44,6 +44,7 @@ class Preprocessor {
     const std::vector<Token> words = Operands(d);
     const bool names_macro = (d.name == "define" || d.name == "undef") && !words.empty();
     if (names_macro) CheckMacroName(d.name, words[0]);
+    if (d.name == "define") CheckStringification(d);
     if (d.name == "define" && !words.empty()) {
       macros_.emplace(words[0].text);
     } else if (d.name == "undef" && !words.empty()) {
@@ -78,6 +79,23 @@ class Preprocessor {
     ctx_.sink->Report(Info(diag), file_,
                       {static_cast<uint32_t>(offset), static_cast<uint32_t>(offset + length)},
                       std::move(message));
+  }
+
+  // GLSL 1.10 and 1.20 3.3: "There are no number sign based operators (no #, #@, ##, etc.)";
+  // glslang stringifies a macro parameter. ## is glslang's to report (it does, by version).
+  void CheckStringification(const Directive& d) {
+    for (size_t i = 0; i < d.words.size(); ++i) {
+      const Token& t = d.words[i];
+      auto touches = [&](size_t j) {
+        return j < d.words.size() && d.words[j].text == "#" &&
+               (d.words[j].offset + 1 == t.offset || t.offset + 1 == d.words[j].offset);
+      };
+      if (t.text != "#" || touches(i + 1) || (i > 0 && touches(i - 1))) continue;
+      Report(Diag::Preprocessor, t.offset, 1,
+             fmt::format("'#' in a macro: the {} preprocessor has no number-sign operators, no "
+                         "stringification (section 3.3)",
+                         VersionName(ctx_)));
+    }
   }
 
   // The name of a #define or #undef.
