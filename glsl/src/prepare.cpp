@@ -131,7 +131,8 @@ void ReadExtensions(Stage stage, const SourceFile& file, const std::vector<Direc
               : fmt::format(
                     "extension '{}' is not supported by the target profile '{}' (it "
                     "has {})",
-                    name, options.profile->name, ProfileExtensionList(options.profile));
+                    name, options.profile != nullptr ? options.profile->name : "mesa",
+                    ProfileExtensionList(options.profile));
       sink->Report(Info(Diag::ExtensionUnsupported),
                    behavior == "require" ? compiler::Severity::Error : compiler::Severity::Warning,
                    &file, RangeOf(d.words[0]), std::move(message));

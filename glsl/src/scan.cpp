@@ -39,15 +39,15 @@ std::vector<Token> Tokenize(std::string_view text) {
   bool line_start = true;
   for (size_t i = 0; i < text.size();) {
     char c = text[i];
-    if (c == '\n') {
+    if (c == '\n' || c == '\r') {  // 3.1: lines end at a carriage return too
       line_start = true;
       ++i;
     } else if (IsLineBlank(c)) {
       ++i;
     } else if (line_start && c == '#') {  // a directive runs to the end of its line
-      while (i < text.size() && text[i] != '\n') ++i;
+      while (i < text.size() && text[i] != '\n' && text[i] != '\r') ++i;
     } else if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
+      while (i < text.size() && text[i] != '\n' && text[i] != '\r') ++i;
     } else if (text.compare(i, 2, "/*") == 0) {
       size_t end = text.find("*/", i + 2);
       // A comment counts as a blank: a '#' after it still starts a directive when only
@@ -68,12 +68,12 @@ std::string BlankComments(std::string_view text) {
   std::string out(text);
   for (size_t i = 0; i + 1 < out.size(); ++i) {
     if (out[i] == '/' && out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+      while (i < out.size() && out[i] != '\n' && out[i] != '\r') out[i++] = ' ';
     } else if (out[i] == '/' && out[i + 1] == '*') {
       out[i] = out[i + 1] = ' ';
       i += 2;
       while (i + 1 < out.size() && !(out[i] == '*' && out[i + 1] == '/')) {
-        if (out[i] != '\n') out[i] = ' ';
+        if (out[i] != '\n' && out[i] != '\r') out[i] = ' ';
         ++i;
       }
       if (i + 1 < out.size()) {
@@ -91,7 +91,7 @@ std::vector<Directive> Directives(std::string_view blanked) {
   bool code = false;
   int depth = 0;
   for (size_t line = 0; line <= blanked.size();) {
-    size_t end = blanked.find('\n', line);
+    size_t end = blanked.find_first_of("\r\n", line);  // a lone '\r' ends a line too
     if (end == std::string_view::npos) end = blanked.size();
     size_t pos = line;
     while (pos < end && IsLineBlank(blanked[pos])) ++pos;

@@ -38,7 +38,7 @@ std::string BlankComments(std::string_view text);
 // One preprocessor line of a comment-blanked text: `# name words...`.
 struct Directive {
   uint32_t hash = 0;      // offset of '#'
-  uint32_t end = 0;       // offset of the end of the line (its '\n' or the end of the text)
+  uint32_t end = 0;       // offset of the line's end (its '\r' or '\n', or the text's end)
   std::string_view name;  // "version", "extension", "" for a null directive
   uint32_t name_offset = 0;
   std::vector<Token> words;  // the tokens after the name

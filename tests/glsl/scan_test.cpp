@@ -64,5 +64,19 @@ TEST(JoinOperators, ReadsADirectivesWords) {
               ElementsAre("A", "&&", "(", "B", "!=", "2", ")"));
 }
 
+// 3.1: a carriage return alone ends a line, as a line feed does (old Mac files): directives,
+// '//' comments and the tokens after them end there.
+TEST(Scan, LoneCarriageReturnsEndLines) {
+  const std::string text = "#version 120\r// note\r#extension GL_X : enable\rfloat f;\r";
+  const std::string blanked = BlankComments(text);
+  std::vector<Directive> directives = Directives(blanked);
+  ASSERT_EQ(directives.size(), 2u);
+  EXPECT_EQ(directives[0].name, "version");
+  EXPECT_THAT(Texts(directives[0].words), ElementsAre("120"));
+  EXPECT_EQ(directives[1].name, "extension");
+  EXPECT_EQ(blanked.substr(directives[1].end, 1), "\r");
+  EXPECT_THAT(Texts(Tokenize(text)), ElementsAre("float", "f", ";"));
+}
+
 }  // namespace
 }  // namespace arbiter::glsl
