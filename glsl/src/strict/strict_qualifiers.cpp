@@ -130,9 +130,41 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
   }
 }
 
+// ARB_explicit_attrib_location (and ARB_fragment_coord_conventions for gl_FragCoord) put
+// layout qualifiers on `in` and `out` declarations: `layout(...) attribute` or `varying` is
+// none of them (Mesa: "`layout' qualifier may not be used with `attribute' or `varying'").
+// glslang 12 takes it.
+void CheckLayoutStorage(const StrictContext& ctx) {
+  for (const compiler::SourceFile* file : ctx.sources) {
+    const std::vector<Token> tokens = Tokenize(file->text());
+    for (size_t i = 0; i + 1 < tokens.size(); ++i) {
+      if (tokens[i].text != "layout" || tokens[i + 1].text != "(") continue;
+      size_t j = i + 1;
+      for (int depth = 0; j < tokens.size(); ++j) {
+        if (tokens[j].text == "(") ++depth;
+        if (tokens[j].text == ")" && --depth == 0) break;
+      }
+      // Other qualifiers (invariant, centroid, flat, ...) may stand between.
+      for (++j; j < tokens.size() && tokens[j].kind == Token::Identifier; ++j) {
+        std::string_view t = tokens[j].text;
+        if (t != "attribute" && t != "varying") continue;
+        ctx.sink->Report(Info(Diag::Qualifier), file,
+                         {tokens[j].offset, static_cast<uint32_t>(tokens[j].offset + t.size())},
+                         fmt::format("a layout qualifier cannot qualify '{}': the extensions "
+                                     "that add layout (GL_ARB_explicit_attrib_location, "
+                                     "GL_ARB_fragment_coord_conventions) give it to 'in' and "
+                                     "'out' declarations",
+                                     t));
+        break;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void CheckQualifiers(const StrictContext& ctx) {
+  CheckLayoutStorage(ctx);
   TIntermNode* root = ctx.ast.getTreeRoot();
   if (root == nullptr) return;
   // EXT_gpu_shader4 allows flat integer varyings; glslang's 1.30 rules check them.
