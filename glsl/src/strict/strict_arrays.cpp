@@ -21,6 +21,7 @@
 // tell is not judged: it reports nothing rather than a false error.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <set>
@@ -584,8 +585,80 @@ void CheckVectorSizes(const StrictContext& ctx) {
   }
 }
 
+// 4.1.9: "It is legal to declare an array without a size and then later re-declare the same
+// name as an array of the same type and specify a size", and "illegal to declare an array
+// with a size, and then later ... index the same array with an integral constant expression
+// greater than or equal to the declared size": so the size given later must exceed every
+// constant index used before. glslang does not compare them. Read from the tokens, with
+// integer literals only: `T a[];`, `T[] a;` (1.20), uses `a[N]`, then `T a[M];`, `T[M] a;` or
+// `T a[] = T[M](...)`.
+void CheckRedeclaredSizes(const StrictContext& ctx) {
+  auto literal = [](const Token& t) -> int {
+    if (t.kind != Token::Number ||
+        t.text.find_first_not_of("0123456789") != std::string_view::npos || t.text.size() > 9) {
+      return -1;
+    }
+    return std::stoi(std::string(t.text));
+  };
+  for (const compiler::SourceFile* file : ctx.sources) {
+    const std::vector<Token> tk = Tokenize(file->text());
+    std::map<std::string_view, int> unsized;  // name -> largest constant index used (-1: none)
+    auto text = [&](size_t i) { return i < tk.size() ? tk[i].text : std::string_view(); };
+    for (size_t i = 0; i + 3 < tk.size(); ++i) {
+      const bool ident = tk[i].kind == Token::Identifier && tk[i + 1].kind == Token::Identifier;
+      // T a [ ] or T [ ] a: an unsized declaration (and T a[] = T[M](...)).
+      std::string_view name;
+      int size = -1;
+      size_t at = i + 1;
+      if (ident && text(i + 2) == "[" && text(i + 3) == "]") {
+        name = tk[i + 1].text;
+        if (text(i + 4) == "=" && text(i + 6) == "[" && text(i + 8) == "]" && i + 7 < tk.size()) {
+          size = literal(tk[i + 7]);
+        }
+      } else if (tk[i].kind == Token::Identifier && text(i + 1) == "[" && text(i + 2) == "]" &&
+                 i + 3 < tk.size() && tk[i + 3].kind == Token::Identifier) {
+        name = tk[i + 3].text;
+        at = i + 3;
+      } else if (ident && text(i + 2) == "[" && text(i + 4) == "]" &&
+                 unsized.count(tk[i + 1].text)) {
+        name = tk[i + 1].text;  // T a [ M ]
+        size = literal(tk[i + 3]);
+      } else if (tk[i].kind == Token::Identifier && text(i + 1) == "[" && text(i + 3) == "]" &&
+                 i + 4 < tk.size() && tk[i + 4].kind == Token::Identifier &&
+                 unsized.count(tk[i + 4].text) && tk[i].text != tk[i + 4].text) {
+        name = tk[i + 4].text;  // T [ M ] a
+        size = literal(tk[i + 2]);
+        at = i + 4;
+      } else if (tk[i].kind == Token::Identifier && text(i + 1) == "[" && text(i + 3) == "]" &&
+                 unsized.count(tk[i].text) && (i == 0 || tk[i - 1].kind != Token::Identifier)) {
+        int index = literal(tk[i + 2]);  // a use: a [ N ]
+        int& largest = unsized[tk[i].text];
+        largest = std::max(largest, index);
+        continue;
+      }
+      if (name.empty()) continue;
+      auto it = unsized.find(name);
+      if (it == unsized.end()) {
+        if (size < 0) unsized.emplace(name, -1);
+        continue;
+      }
+      if (size >= 0 && size <= it->second) {
+        const Token& t = tk[at];
+        ctx.sink->Report(
+            Info(Diag::ArraySize), file,
+            {t.offset, static_cast<uint32_t>(t.offset + t.text.size())},
+            fmt::format("'{}' is given {} elements, but index {} was used before: an array's "
+                        "size must exceed every constant index used ({} section 4.1.9)",
+                        name, size, it->second, VersionName(ctx)));
+      }
+      if (size >= 0) unsized.erase(it);
+    }
+  }
+}
+
 void CheckArraySizes(const StrictContext& ctx) {
   CheckVectorSizes(ctx);
+  CheckRedeclaredSizes(ctx);
   // 1.20 4.3.3: "An integral constant expression is a constant expression that evaluates to a
   // scalar integer", built-in calls included: what glslang checks.
   if (ctx.version == 110) ArraySizes(ctx).Run();
