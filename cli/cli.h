@@ -14,6 +14,7 @@
 #include "arbiter/compiler/render.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/check.h"
+#include "arbiter/glsl/link.h"
 
 namespace arbiter::cli {
 
@@ -77,6 +78,13 @@ struct GlslSetup {
 // Resolves --limits, the preprocessor options and the warning switches; on error prints it
 // and returns the exit code (Usage, or Environment for an unreadable --preamble).
 std::optional<Exit> ResolveGlslSetup(const CommonOptions& options, GlslSetup* out);
+// Links GLSL shader objects as one program (glsl::LinkShaders) with the setup's options and
+// warning switches, and moves the diagnostics to the reports of their files (keep[i] is
+// reports[i]'s file). Returns Rejected when the program does not link.
+Exit LinkAndReport(const std::vector<glsl::ShaderObject>& objects, const CommonOptions& options,
+                   const GlslSetup& glsl_setup,
+                   const std::vector<std::unique_ptr<compiler::SourceFile>>& keep,
+                   std::vector<compiler::FileReport>* reports);
 // Adds -D, -U, -I, --preamble and --warning to a command that checks GLSL.
 void AddGlslOptions(CLI::App* app, CommonOptions* options);
 

@@ -123,14 +123,7 @@ int CheckProgram(const std::vector<Input>& inputs, const CommonOptions& options,
     reports.push_back(std::move(report));
   }
   if (exit == Exit::Ok && !objects.empty()) {
-    compiler::DiagnosticSink sink(options.error_limit);
-    glsl::LinkOptions link;
-    link.profile = glsl_setup.check.profile;
-    link.check = glsl_setup.check;
-    glsl::LinkShaders(objects, link, &sink);
-    sink.ApplyWarningPolicy(glsl_setup.warnings);
-    if (sink.error_count() + sink.dropped() > 0) exit = Exit::Rejected;
-    DistributeDiagnostics(&sink, keep, &reports);
+    exit = LinkAndReport(objects, options, glsl_setup, keep, &reports);
   }
   PrintReports(reports, options);
   return static_cast<int>(exit);

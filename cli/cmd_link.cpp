@@ -82,16 +82,7 @@ int RunLink(const LinkCommandOptions& options) {
     shader_objects.push_back({object.stage, {}});
     ReadStage(object.strings, &shader_objects.back().strings, &keep, &reports, &exit);
   }
-  if (exit == Exit::Ok) {
-    compiler::DiagnosticSink sink(common.error_limit);
-    glsl::LinkOptions link_options;
-    link_options.profile = glsl_setup.check.profile;
-    link_options.check = glsl_setup.check;
-    glsl::LinkShaders(shader_objects, link_options, &sink);
-    sink.ApplyWarningPolicy(glsl_setup.warnings);
-    if (sink.error_count() + sink.dropped() > 0) exit = Exit::Rejected;
-    DistributeDiagnostics(&sink, keep, &reports);
-  }
+  if (exit == Exit::Ok) exit = LinkAndReport(shader_objects, common, glsl_setup, keep, &reports);
   PrintReports(reports, common);
   return static_cast<int>(exit);
 }

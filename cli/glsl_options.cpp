@@ -5,6 +5,7 @@
 
 #include "arbiter/arbvp/check.h"
 #include "arbiter/glsl/check.h"
+#include "arbiter/glsl/link.h"
 #include "cli.h"
 
 namespace arbiter::cli {
@@ -91,6 +92,21 @@ std::optional<Exit> ResolveGlslSetup(const CommonOptions& options, GlslSetup* ou
     if (!ParseWarningSwitch(w, &out->warnings)) return Exit::Usage;
   }
   return std::nullopt;
+}
+
+Exit LinkAndReport(const std::vector<glsl::ShaderObject>& objects, const CommonOptions& options,
+                   const GlslSetup& glsl_setup,
+                   const std::vector<std::unique_ptr<compiler::SourceFile>>& keep,
+                   std::vector<compiler::FileReport>* reports) {
+  compiler::DiagnosticSink sink(options.error_limit);
+  glsl::LinkOptions link;
+  link.profile = glsl_setup.check.profile;
+  link.check = glsl_setup.check;
+  glsl::LinkShaders(objects, link, &sink);
+  sink.ApplyWarningPolicy(glsl_setup.warnings);
+  const Exit exit = sink.error_count() + sink.dropped() > 0 ? Exit::Rejected : Exit::Ok;
+  DistributeDiagnostics(&sink, keep, reports);
+  return exit;
 }
 
 }  // namespace arbiter::cli

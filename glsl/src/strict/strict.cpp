@@ -29,6 +29,21 @@ bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::strin
   return false;
 }
 
+const std::vector<Token>& SourceTokens(const StrictContext& ctx, size_t index) {
+  if (ctx.tokens.empty()) {
+    ctx.tokens.reserve(ctx.sources.size());
+    for (const compiler::SourceFile* file : ctx.sources)
+      ctx.tokens.push_back(Tokenize(file->text()));
+  }
+  return ctx.tokens[index];
+}
+
+const std::vector<Token>& SourceTokens(const StrictContext& ctx, const compiler::SourceFile* file) {
+  size_t index = 0;
+  while (index + 1 < ctx.sources.size() && ctx.sources[index] != file) ++index;
+  return SourceTokens(ctx, index);
+}
+
 const std::string& BlankedText(const StrictContext& ctx, size_t index) {
   if (ctx.blanked.empty()) {
     ctx.blanked.reserve(ctx.sources.size());

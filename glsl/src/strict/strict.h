@@ -44,6 +44,8 @@ struct StrictContext {
   // Each source with its comments blanked, made once for the chapters that scan the text
   // (BlankedText); empty until the first asks.
   mutable std::vector<std::string> blanked = {};
+  // Each source's tokens (Tokenize), made once for the rules that read tokens (SourceTokens).
+  mutable std::vector<std::vector<Token>> tokens = {};
 };
 
 // Chapter 3.3, the preprocessor: #version below 110, #extension placement, #pragma
@@ -80,6 +82,11 @@ void CheckFragmentOutputs(const StrictContext& ctx);  // strict_builtins.cpp
 // in any source; false when there is none. For rules whose AST node has no usable location.
 bool FindDeclaration(const StrictContext& ctx, std::string_view name, std::string_view keyword,
                      const compiler::SourceFile** file, compiler::Range* range);
+
+// Tokenize of ctx.sources[index]'s text, computed once per shader; the tokens view the file.
+const std::vector<Token>& SourceTokens(const StrictContext& ctx, size_t index);
+// The same for a source given by its file (one of ctx.sources).
+const std::vector<Token>& SourceTokens(const StrictContext& ctx, const compiler::SourceFile* file);
 
 // BlankComments of ctx.sources[index], computed once per shader.
 const std::string& BlankedText(const StrictContext& ctx, size_t index);

@@ -560,7 +560,7 @@ class ArraySizes {
 // glslang rejects the vector itself).
 void CheckVectorSizes(const StrictContext& ctx) {
   for (const compiler::SourceFile* file : ctx.sources) {
-    const std::vector<Token> tokens = Tokenize(file->text());
+    const std::vector<Token>& tokens = SourceTokens(ctx, file);
     for (size_t i = 0; i + 3 < tokens.size(); ++i) {
       std::string_view type = tokens[i + 1].text;
       const bool vector = type.size() == 4 || type.size() == 5
@@ -601,7 +601,7 @@ void CheckRedeclaredSizes(const StrictContext& ctx) {
     return std::stoi(std::string(t.text));
   };
   for (const compiler::SourceFile* file : ctx.sources) {
-    const std::vector<Token> tk = Tokenize(file->text());
+    const std::vector<Token>& tk = SourceTokens(ctx, file);
     std::map<std::string_view, int> unsized;  // name -> largest constant index used (-1: none)
     auto text = [&](size_t i) { return i < tk.size() ? tk[i].text : std::string_view(); };
     for (size_t i = 0; i + 3 < tk.size(); ++i) {

@@ -28,7 +28,7 @@ const std::set<std::string_view>& ConstructorTypes() {
 void CheckConstInitializers(const StrictContext& ctx) {
   if (ctx.version != 110) return;  // 1.20 4.3.3 allows built-in calls; glslang checks the rest
   for (const compiler::SourceFile* file : ctx.sources) {
-    std::vector<Token> toks = Tokenize(file->text());
+    const std::vector<Token>& toks = SourceTokens(ctx, file);
     std::set<std::string_view> structs;
     for (size_t i = 0; i + 1 < toks.size(); ++i) {
       if (toks[i].text == "struct") structs.insert(toks[i + 1].text);

@@ -97,7 +97,7 @@ void CheckLocalPrototypes(const StrictContext& ctx) {
       "ivec4",  "bvec2",  "bvec3",  "bvec4",  "mat2",   "mat3",   "mat4",  "mat2x2", "mat2x3",
       "mat2x4", "mat3x2", "mat3x3", "mat3x4", "mat4x2", "mat4x3", "mat4x4"};
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
-    const std::vector<Token> tokens = Tokenize(ctx.sources[index]->text());
+    const std::vector<Token>& tokens = SourceTokens(ctx, index);
     std::set<std::string_view> structs;
     int depth = 0;
     bool statement_start = true;
@@ -224,7 +224,7 @@ void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
   root->traverse(&user);
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const compiler::SourceFile* file = ctx.sources[index];
-    const std::vector<Token> tokens = Tokenize(file->text());
+    const std::vector<Token>& tokens = SourceTokens(ctx, file);
     std::set<std::string_view> declared;  // functions the shader declares at global scope
     int depth = 0;
     for (size_t i = 0; i + 2 < tokens.size(); ++i) {

@@ -136,7 +136,7 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
 // glslang 12 takes it.
 void CheckLayoutStorage(const StrictContext& ctx) {
   for (const compiler::SourceFile* file : ctx.sources) {
-    const std::vector<Token> tokens = Tokenize(file->text());
+    const std::vector<Token>& tokens = SourceTokens(ctx, file);
     for (size_t i = 0; i + 1 < tokens.size(); ++i) {
       if (tokens[i].text != "layout" || tokens[i + 1].text != "(") continue;
       size_t j = i + 1;
