@@ -1,4 +1,4 @@
-// Linking a GLSL 1.10 vertex shader and fragment shader as one program: each stage's own
+// Linking GLSL 1.10 and 1.20 shaders as one program (glLinkProgram): each stage's own
 // diagnostics, then the rules between the stages and the program's resource limits.
 #pragma once
 
