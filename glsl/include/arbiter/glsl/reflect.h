@@ -1,5 +1,5 @@
-// Reflection of a GLSL 1.10 or 1.20 shader from glslang's AST: its attributes, uniforms, samplers and
-// varyings, the built-in state it reads and writes, and the resources they take.
+// Reflection of a GLSL 1.10 or 1.20 shader from glslang's AST: its attributes, uniforms,
+// samplers and varyings, the built-in state it reads and writes, and the resources they take.
 #pragma once
 
 #include <string>
