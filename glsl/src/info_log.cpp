@@ -352,10 +352,20 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   if (message.find(kGoogleInclude) != std::string::npos) {
     message = "#include needs '#extension GL_ARB_shading_language_include : enable' (or require)";
   } else if (message.compare(0, kNotFound.size(), kNotFound) == 0) {
-    message = fmt::format(
-        "cannot find the #include file '{}' (looked next to the including file, then in each -I "
-        "directory)",
-        message.substr(kNotFound.size()));
+    const std::string header = message.substr(kNotFound.size());
+    const std::string* reason = nullptr;
+    if (ctx.prepared != nullptr) {
+      auto failure = ctx.prepared->include_failures.find(header);
+      if (failure != ctx.prepared->include_failures.end()) reason = &failure->second;
+    }
+    if (reason != nullptr) {
+      message = *reason;
+    } else {
+      message = fmt::format(
+          "cannot find the #include file '{}' (looked next to the including file, then in each "
+          "-I directory)",
+          header);
+    }
   }
   // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
   if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&

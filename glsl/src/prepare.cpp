@@ -269,9 +269,12 @@ namespace {
 // directory, then in each -I directory ("/a/b.glsl" is relative to those roots).
 class FileIncluder : public glslang::TShader::Includer {
  public:
+  static constexpr size_t kMaxIncludeDepth = 64;
+
   explicit FileIncluder(PreparedShader* prepared) : prepared_(prepared) {}
 
-  IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
+    if (TooDeep(header, depth)) return nullptr;
     std::string name(header);
     if (!name.empty() && name.front() != '/') {
       const SourceFile* from = IncludedFile(*prepared_, includer);
@@ -281,7 +284,8 @@ class FileIncluder : public glslang::TShader::Includer {
     return includeSystem(header, includer, 0);
   }
 
-  IncludeResult* includeSystem(const char* header, const char*, size_t) override {
+  IncludeResult* includeSystem(const char* header, const char*, size_t depth) override {
+    if (TooDeep(header, depth)) return nullptr;
     std::string name(header);
     while (!name.empty() && name.front() == '/') name.erase(0, 1);
     for (const std::string& dir : prepared_->include_dirs) {
@@ -294,6 +298,15 @@ class FileIncluder : public glslang::TShader::Includer {
   void releaseInclude(IncludeResult* result) override { delete result; }
 
  private:
+  // An include cycle (a file that includes itself, directly or not) would never end: past
+  // kMaxIncludeDepth nested includes the include fails, and says why.
+  bool TooDeep(const char* header, size_t depth) {
+    if (depth <= kMaxIncludeDepth) return false;
+    prepared_->include_failures[header] = fmt::format(
+        "#include nested more than {} deep (a file that includes itself?)", kMaxIncludeDepth);
+    return true;
+  }
+
   static std::string DirectoryOf(const std::string& path) {
     size_t slash = path.rfind('/');
     return slash == std::string::npos ? "" : path.substr(0, slash + 1);

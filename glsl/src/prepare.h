@@ -4,6 +4,7 @@
 // both parse the same text.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,8 @@ struct PreparedShader {
   // directive), from the including file's directory and then `include_dirs`.
   bool include = false;
   std::vector<std::string> include_dirs;
+  // Why an #include failed other than by not finding its file, by the name it gave.
+  std::map<std::string, std::string, std::less<>> include_failures;
   // The preamble text of the extensions the shader enables (Extension::vertex_preamble).
   std::string enabled_preamble;
   // glslang's preamble (placed after #version): arbiter's lines, then --preamble's file.
