@@ -221,7 +221,7 @@ bool IsBuiltinFunction(std::string_view name) {
 // resolved to the built-in: no user call of the name on the call's line.
 void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
   UserCalls user;
-  root->traverse(&user);
+  bool traversed = false;  // the AST walk is paid only by a shader that declares such a name
   for (size_t index = 0; index < ctx.sources.size(); ++index) {
     const compiler::SourceFile* file = ctx.sources[index];
     const std::vector<Token>& tokens = SourceTokens(ctx, file);
@@ -237,6 +237,8 @@ void CheckHiddenBuiltins(const StrictContext& ctx, TIntermNode* root) {
       }
     }
     if (declared.empty()) continue;
+    if (!traversed) root->traverse(&user);
+    traversed = true;
     depth = 0;
     for (size_t i = 0; i + 1 < tokens.size(); ++i) {
       if (tokens[i].text == "{") ++depth;
