@@ -42,8 +42,7 @@ const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
 
 // Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
-// ARB header (formats.md), and GLSL files (glsl::IsGlslPath: .vert .vs .vsh .frag .fs .fsh
-// .glsl).
+// ARB header (formats.md), and GLSL files whose name gives the stage (glsl::StageFromPath).
 bool IsProgramFile(const std::string& path) {
   const std::string_view name = path;
   const size_t dot = name.rfind('.');
@@ -54,7 +53,10 @@ bool IsProgramFile(const std::string& path) {
   }
   const std::string_view ext = name.substr(dot);
   if (ext == ".vp" || ext == ".fp" || ext == ".arbvp" || ext == ".arbfp") return true;
-  if (glsl::IsGlslPath(name)) return true;
+  // A bare .glsl in a directory is an include file or a library as often as a shader: only
+  // names that say the stage are picked up (a .glsl named on the command line is checked, and
+  // told to give its stage).
+  if (glsl::StageFromPath(name)) return true;
   if (ext != ".txt") return false;
   char head[5] = {};
   std::ifstream in(path, std::ios::binary);

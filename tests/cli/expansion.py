@@ -53,6 +53,20 @@ with tempfile.TemporaryDirectory() as tmp:
         code, got = checked(["-j", jobs, "top"], tmp)
         expect(f"check -j {jobs} top: the files, sorted", got == want, f"{got}")
         expect(f"check -j {jobs} top: exit 0", code == 0, f"exit {code}")
+    # GLSL: names that give the stage are shaders; a bare .glsl (an include file, a library) in
+    # a directory is not picked up, but named, it is checked (and told to give its stage).
+    shader = b"void main() { gl_Position = ftransform(); }\n"
+    for rel in ["glsl/common.glsl", "glsl/water.vert.glsl", "glsl/sky.vsh", "glsl/sky.fsh"]:
+        put(rel, shader if "common" not in rel else b"float helper() { return 1.0; }\n")
+    with open(os.path.join(tmp, "glsl/sky.fsh"), "wb") as f:
+        f.write(b"void main() { gl_FragColor = vec4(1.0); }\n")
+    code, got = checked(["glsl"], tmp)
+    expect("check glsl: staged GLSL names only, sorted",
+           got == ["glsl/sky.fsh", "glsl/sky.vsh", "glsl/water.vert.glsl"], f"{got}")
+    expect("check glsl: exit 0", code == 0, f"exit {code}")
+    code, got = checked(["glsl/common.glsl"], tmp)
+    expect("a named .glsl is checked and needs --stage", got == ["glsl/common.glsl"] and code == 1,
+           f"{got}, exit {code}")
     code, got = checked(["top/sub", "top/a.fp", "top/sub/"], tmp)
     expect("directories expand where they are named", got == [
         "top/sub/c.fp", "top/sub/z/deep.vp", "top/a.fp", "top/sub/c.fp", "top/sub/z/deep.vp"],
