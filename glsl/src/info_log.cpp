@@ -386,6 +386,15 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
     message += fmt::format(" ('{}')", token);
   }
 
+  // "extension not supported: NAME" quotes '#extension': point at the name instead.
+  if (diag == Diag::ExtensionUnsupported && text.rfind(": ") != std::string::npos) {
+    token = text.substr(text.rfind(": ") + 2);
+    message = fmt::format(
+        "extension '{}' is not supported: neither arbiter's table of legacy extensions nor "
+        "glslang knows it",
+        token);
+  }
+
   compiler::Range range{0, 0};
   if (diag == Diag::NestingTooDeep) {
     range = DeepestNesting(*file);

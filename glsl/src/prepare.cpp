@@ -101,10 +101,7 @@ void ReadVersion(const SourceFile& file, const std::vector<Directive>& directive
 void ReadExtensions(Stage stage, const SourceFile& file, const std::vector<Directive>& directives,
                     const CheckOptions& options, std::string* text, PreparedShader* out,
                     compiler::DiagnosticSink* sink) {
-  int conditional_depth = 0;  // inside #if groups, whose values glslang knows, not this scan
   for (const Directive& d : directives) {
-    if (d.name == "if" || d.name == "ifdef" || d.name == "ifndef") ++conditional_depth;
-    if (d.name == "endif" && conditional_depth > 0) --conditional_depth;
     if (d.name != "extension") continue;
     // "#extension name : behavior"; anything else is glslang's to report.
     if (d.words.size() != 3 || d.words[0].kind != Token::Identifier || d.words[1].text != ":" ||
@@ -118,21 +115,17 @@ void ReadExtensions(Stage stage, const SourceFile& file, const std::vector<Direc
     if (!wanted && behavior != "disable") continue;  // glslang reports the behaviour
     const Extension* extension = FindExtension(name);
     const bool available = extension != nullptr && ProfileHas(options.profile, *extension);
-    // In a conditional group the directive may not be compiled: glslang judges it there (its
-    // "extension not supported" gets this code, info_log.cpp).
-    if (extension == nullptr && conditional_depth > 0) continue;
+    // A name outside the table is glslang's to judge: it enables the extensions it implements
+    // (Mesa has more than the table lists) and reports the others ("extension not supported",
+    // glsl-extension-unsupported in info_log.cpp), in the #if groups it compiles only.
+    if (extension == nullptr) continue;
     if (!available) {
       // 3.3: require: "give an error on the #extension if the extension is not supported";
       // enable, warn, disable: "warn on the #extension if the extension is not supported".
       std::string message =
-          extension == nullptr
-              ? fmt::format("unknown extension '{}': arbiter knows {}", name,
-                            ProfileExtensionList(nullptr))
-              : fmt::format(
-                    "extension '{}' is not supported by the target profile '{}' (it "
-                    "has {})",
-                    name, options.profile != nullptr ? options.profile->name : "mesa",
-                    ProfileExtensionList(options.profile));
+          fmt::format("extension '{}' is not supported by the target profile '{}' (it has {})",
+                      name, options.profile != nullptr ? options.profile->name : "mesa",
+                      ProfileExtensionList(options.profile));
       sink->Report(Info(Diag::ExtensionUnsupported),
                    behavior == "require" ? compiler::Severity::Error : compiler::Severity::Warning,
                    &file, RangeOf(d.words[0]), std::move(message));
