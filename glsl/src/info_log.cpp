@@ -32,6 +32,8 @@ struct MessageRule {
 };
 
 constexpr MessageRule kCompileRules[] = {
+    // The shader's own words, which may hold any of the needles below.
+    {"'#error' :", Diag::ErrorDirective},
     {"extension not supported", Diag::ExtensionUnsupported},
     // bison's "memory exhausted": its stack of YYMAXDEPTH (10000) entries overflowed.
     {"memory exhausted", Diag::NestingTooDeep},

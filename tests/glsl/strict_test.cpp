@@ -156,6 +156,33 @@ TEST(Strict, ConstantIndexPastVectorWarns) {
               ElementsAre("4:23 glsl-index-out-of-range", "4:23 glsl-index-out-of-range"));
 }
 
+// 3.3: #error's message is the shader's own; words in it ("array", "version") do not pick the
+// code.
+TEST(Strict, ErrorDirectiveHasItsOwnCode) {
+  EXPECT_THAT(Check(Stage::Fragment, "void main() {}\n#error wrong array version\n"),
+              ElementsAre("2:1 glsl-error-directive"));
+}
+
+// 5.9: unary '+' takes numbers only; glslang drops the operator, arbiter finds its operand.
+TEST(Strict, UnaryPlusTakesNumbers) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "struct S { float x; };\nuniform S s;\nuniform vec4 a[2];\n"
+                    "float f(float x) { return +x; }\nvoid main() {\n"
+                    "  float x = +a[0].x + +s.x + +f(1.0) + 1e+5;\n"
+                    "  gl_Position = vec4(+x, x+ +x, x++ + +x, - +x);\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "void f(void) {}\nstruct S { float x; };\nuniform S s;\nuniform bool b;\n"
+                    "void main() {\n  +f();\n  bool c = +b;\n  S t = +s;\n"
+                    "  gl_Position = vec4(0.0);\n}\n"),
+              ElementsAre("6:3 glsl-unary-plus-operand", "7:12 glsl-unary-plus-operand",
+                          "8:9 glsl-unary-plus-operand"));
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#version 120\nuniform vec4 a[2];\nuniform vec4 b[2];\n"
+                    "void main() { gl_Position = vec4(+a == b); }\n"),
+              ElementsAre("4:34 glsl-unary-plus-operand"));
+}
+
 // 5.7-5.9: whole arrays are no operands of '=', '==', '!=' or '?:'; structures with array
 // fields are.
 TEST(Strict, WholeArraysAreNoOperands) {

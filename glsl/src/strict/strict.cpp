@@ -80,6 +80,7 @@ void RunStrictChecks(const StrictContext& ctx) {
   CheckFloatLiterals(ctx);
   CheckArraySizes(ctx);
   CheckExpressions(ctx);
+  CheckUnaryPlus(ctx);
   CheckFunctions(ctx);
   CheckBuiltinVariables(ctx);
 }

@@ -65,6 +65,8 @@ void CheckArraySizes(const StrictContext& ctx);  // strict_arrays.cpp
 // Chapter 5, operators and expressions: whole arrays as operands of '=', '==', '!=' and
 // '?:'; an unparenthesized assignment as the third operand of '?:'.
 void CheckExpressions(const StrictContext& ctx);  // strict_expressions.cpp
+// Chapter 5.9: the operand of a unary '+' is a number (glslang drops the operator).
+void CheckUnaryPlus(const StrictContext& ctx);  // strict_unary_plus.cpp
 
 // Chapter 6.1, function definitions: out/inout arrays (1.10), samplers as out/inout parameters
 // or return values, prototypes inside functions (1.20).
