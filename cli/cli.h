@@ -18,7 +18,7 @@
 
 namespace arbiter::cli {
 
-// Process exit codes (architecture.md).
+// Process exit codes (docs/design/architecture.md).
 enum class Exit : int { Ok = 0, Rejected = 1, Usage = 2, Environment = 3 };
 
 // The worse of two outcomes: Environment > Usage > Rejected > Ok.

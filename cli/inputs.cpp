@@ -42,7 +42,8 @@ const compiler::DiagnosticInfo kIoRead{"io-read", compiler::Severity::Error,
                                        "an input could not be read", ""};
 
 // Program files found in directories: ARB .vp .fp .arbvp .arbfp, .txt files that start with an
-// ARB header (formats.md), and GLSL files whose name gives the stage (glsl::StageFromPath).
+// ARB header (docs/design/formats.md), and GLSL files whose name gives the stage
+// (glsl::StageFromPath).
 bool IsProgramFile(const std::string& path) {
   const std::string_view name = path;
   const size_t dot = name.rfind('.');

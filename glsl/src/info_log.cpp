@@ -369,7 +369,7 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
           header);
     }
   }
-  // Diagnostics start in lower case (style.md E4); keep acronyms ("GLSL") as they are.
+  // Diagnostics start in lower case (docs/design/style.md E4); keep acronyms ("GLSL") as they are.
   if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
       std::islower(static_cast<unsigned char>(message[1]))) {
     message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));

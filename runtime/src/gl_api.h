@@ -8,7 +8,7 @@
 namespace arbiter::runtime {
 
 // Core GL 1.x entry points, declared by hand: nothing may refer to libGL's symbols (linking
-// libGL beside libOSMesa makes glvnd's glGetString win and return NULL: platform.md).
+// libGL beside libOSMesa makes glvnd's glGetString win and return NULL: docs/design/platform.md).
 using PfnGetError = GLenum(APIENTRYP)();
 using PfnGetIntegerv = void(APIENTRYP)(GLenum, GLint*);
 using PfnGetString = const GLubyte*(APIENTRYP)(GLenum);

@@ -1,5 +1,5 @@
-// The exact GLSL statements of instructions that translators get wrong (semantics.md): RSQ
-// takes |x|, LIT's clamps and 0^0, SWZ, CMP, LRP operand order, matrix rows, relative
+// The exact GLSL statements of instructions that translators get wrong (docs/design/semantics.md):
+// RSQ takes |x|, LIT's clamps and 0^0, SWZ, CMP, LRP operand order, matrix rows, relative
 // addressing, KIL and NaN, masks, scalar replication.
 #include <gtest/gtest.h>
 

@@ -269,7 +269,7 @@ void AluCases(Table& t) {
         "RCP result.color.x, e0.x;\nRCP result.color.y, e0.y;\nRCP result.color.z, e0.z;\n"
         "RCP result.color.w, e0.w;\n",
         {{3, -0.5f, kInf, 0.0f}}, {Rel(kColor, {1.0f / 3.0f, -2, 0, kInf})});
-  t.Fp1("rcp_negative_zero", "sign of RCP(-0) is undefined (semantics.md)",
+  t.Fp1("rcp_negative_zero", "sign of RCP(-0) is undefined (docs/design/semantics.md)",
         "RCP result.color, e0.x;\n", {{-0.0f, 0, 0, 0}}, {Undef(kColor, 0xF, "RCP of -0")});
   // RSQ uses |x|: RSQ(-4) = 0.5; RSQ(-0) = 1/sqrt(+0) = +inf.
   t.Fp1("rsq_abs", "ARBfp 3.11.5.22",
@@ -301,8 +301,9 @@ void AluCases(Table& t) {
   t.Fp1("pow_negative_base", "ARBfp 3.11.5.20: negative base goes through a logarithm",
         "POW result.color, e0.x, e1.x;\n", {{-2, 0, 0, 0}, {2, 0, 0, 0}},
         {Undef(kColor, 0xF, "POW with a negative base")});
-  t.Fp1("pow_zero_zero", "POW(0, 0) is undefined (semantics.md)", "POW result.color, e0.x, e1.x;\n",
-        {{0, 0, 0, 0}, {0, 0, 0, 0}}, {Undef(kColor, 0xF, "POW with base 0")});
+  t.Fp1("pow_zero_zero", "POW(0, 0) is undefined (docs/design/semantics.md)",
+        "POW result.color, e0.x, e1.x;\n", {{0, 0, 0, 0}, {0, 0, 0, 0}},
+        {Undef(kColor, 0xF, "POW with base 0")});
   t.Fp1("pow_zero_base", "ARBfp 3.11.5.20: ApproxPower goes through ApproxLog2(0), undefined",
         "POW result.color, e0.x, e1.x;\n", {{0, 0, 0, 0}, {2, 0, 0, 0}},
         {Undef(kColor, 0xF, "POW with base 0")});

@@ -22,8 +22,8 @@ using arbvp::Vec4;
 //   Absolute  |got - want| <= bound: approximations near 0 (SIN, COS, fog blends)
 enum class Tolerance : uint8_t { Exact, Relative, Absolute };
 
-// The accuracy ARBvp issue 28 gives EXP and LOG (2^-11), which architecture.md applies to
-// every approximated operation.
+// The accuracy ARBvp issue 28 gives EXP and LOG (2^-11), which docs/design/architecture.md applies
+// to every approximated operation.
 inline constexpr float kApprox = 1.0f / 2048.0f;
 
 struct Expect {

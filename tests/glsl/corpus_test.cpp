@@ -1,6 +1,6 @@
 // Runs every corpus/glsl shader through the GLSL checker and compares the verdict with its
-// piglit `// [config]` block (formats.md): `expect_result: pass|fail`, and `check_link: true`
-// to judge it as a linked program. Shaders where arbiter does not yet follow the
+// piglit `// [config]` block (docs/design/formats.md): `expect_result: pass|fail`, and `check_link:
+// true` to judge it as a linked program. Shaders where arbiter does not yet follow the
 // specification are listed, with the reason, in tests/glsl/known-gaps.txt: they must still
 // disagree (a fixed gap must leave the list), and every other shader must agree.
 #include <gtest/gtest.h>

@@ -11,9 +11,9 @@
 //     "extensions":[...]}: what the context advertises (for `# REQUIRE` lines)
 //
 // The driver comes from --driver, else GALLIUM_DRIVER, else softpipe; anything but softpipe or
-// llvmpipe is refused before a context exists (another value crashes OSMesa: platform.md).
-// Every GL entry point is loaded through OSMesaGetProcAddress: libGL must not be linked.
-// Exit codes: 0 done (whatever the verdicts), 2 usage, 3 I/O or GL context error.
+// llvmpipe is refused before a context exists (another value crashes OSMesa:
+// docs/design/platform.md). Every GL entry point is loaded through OSMesaGetProcAddress: libGL must
+// not be linked. Exit codes: 0 done (whatever the verdicts), 2 usage, 3 I/O or GL context error.
 
 #include <GL/osmesa.h>
 

@@ -3,10 +3,10 @@
 // Usage:
 //   mesa_glsl_compile [--driver softpipe|llvmpipe] [--stats] FILE...
 //
-// Each file is judged as the GLSL corpus test judges it (formats.md): the piglit `// [config]`
-// block at the top decides; `check_link: true` compiles and links (arbiter: CheckOptions::link),
-// anything else compiles only. Mesa compiles through an OSMesa context (arbiter::runtime);
-// arbiter through glsl::CheckShader in this process. One line per file:
+// Each file is judged as the GLSL corpus test judges it (docs/design/formats.md): the piglit `//
+// [config]` block at the top decides; `check_link: true` compiles and links (arbiter:
+// CheckOptions::link), anything else compiles only. Mesa compiles through an OSMesa context
+// (arbiter::runtime); arbiter through glsl::CheckShader in this process. One line per file:
 //   {"path":..., "stage":"vert"|"frag", "link":bool, "expect":"pass"|"fail"|null,
 //    "mesa":{"accepted","compiled","linked","first_error","log","failure"},
 //    "arbiter":{"accepted","diagnostics":["line:col: severity: message [code]", ...]}}

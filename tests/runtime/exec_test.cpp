@@ -163,7 +163,7 @@ TEST_F(ExecTest, VertexMovOfAttributesAndParameters) {
     EXPECT_TRUE(Value(r, "result.position", {f, -2.5f, 1e6f, 3.0f}));
     EXPECT_TRUE(Value(r, "result.color.front.primary", {0.25f, -1.0f, 7.0f + f, 0.5f}));
     EXPECT_TRUE(Value(r, "result.color.front.secondary", {1.0f, 2.0f, 3.0f, 4.0f}));
-    // Unwritten components read 0; -0 crosses the varying as +0 (platform.md).
+    // Unwritten components read 0; -0 crosses the varying as +0 (docs/design/platform.md).
     EXPECT_TRUE(Value(r, "result.texcoord[1]", {-3.4e38f, 1e-3f, 0.0f, 0.0f}));
     EXPECT_TRUE(Value(r, "result.texcoord[0]", {0.0f, 6.0f, 0.0f, 0.0f}));
     EXPECT_EQ(Written(r, "result.texcoord[1]"), 0xB);
@@ -568,7 +568,7 @@ TEST_F(ExecTest, KillAndDepth) {
   EXPECT_EQ(results[0].outputs.back().name, "result.depth");
   EXPECT_TRUE(results[1].killed);
   EXPECT_TRUE(results[1].outputs.empty());
-  // NaN < 0 is false: no kill (semantics.md).
+  // NaN < 0 is false: no kill (docs/design/semantics.md).
   EXPECT_FALSE(results[2].killed);
   // -1e-30 is a denormal... no: it is a normal float below zero, so it kills.
   EXPECT_TRUE(results[3].killed);
@@ -689,7 +689,7 @@ TEST_F(ExecTest, SpecialValuesAndDepth) {
   // -0 < 0 is false and NaN < 0 is false: none of these kills.
   EXPECT_FALSE(results[0].killed);
   EXPECT_FALSE(results[1].killed);
-  // inf and NaN come back exactly; -0 crosses the varying as +0 (platform.md).
+  // inf and NaN come back exactly; -0 crosses the varying as +0 (docs/design/platform.md).
   EXPECT_TRUE(Value(results[0], "result.color[0]", {inf, -inf, nan, 0.0f}));
   // Window depth through the depth range: exact where the arithmetic is, else within an ulp
   // or two of float.
@@ -1038,7 +1038,8 @@ TEST_F(ExecTest, EveryValidCorpusProgramRuns) {
     text << file.rdbuf();
     std::unique_ptr<arbvp::Program> program = Parse(text.str());
     ASSERT_NE(program, nullptr);
-    // NV options are not Mesa's: such programs run on the interpreter only (platform.md).
+    // NV options are not Mesa's: such programs run on the interpreter only
+    // (docs/design/platform.md).
     if (text.str().find("OPTION NV_") != std::string::npos) continue;
     arbvp::ExecInputs in = Inputs(2);
     in.vectors[1].vertex.position = {1.0f, 2.0f, 3.0f, 1.0f};

@@ -1,7 +1,7 @@
 // Rewriting the programs of one run so that every result register they write reaches a
-// float colour attachment (architecture.md, Execution design): writes go to temporaries,
-// copied at the end into varyings (vertex programs) or draw buffers (fragment programs), in
-// as many passes as the attachments need.
+// float colour attachment (docs/design/architecture.md, Execution design): writes go to
+// temporaries, copied at the end into varyings (vertex programs) or draw buffers (fragment
+// programs), in as many passes as the attachments need.
 #pragma once
 
 #include <set>

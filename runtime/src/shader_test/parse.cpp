@@ -1,4 +1,4 @@
-// Splitting a .shader_test file into its sections (formats.md, shader_test).
+// Splitting a .shader_test file into its sections (docs/design/formats.md, shader_test).
 #include <fmt/format.h>
 
 #include <array>

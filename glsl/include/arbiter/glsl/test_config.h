@@ -1,5 +1,6 @@
 // piglit's GLSL parser-test convention: the `// [config]` comment block at the top of a
-// shader (formats.md), used by the corpus, the agreement test and later by `arbiter run`.
+// shader (docs/design/formats.md), used by the corpus, the agreement test and later by `arbiter
+// run`.
 #pragma once
 
 #include <map>

@@ -1,5 +1,5 @@
 // Running ARB programs on Mesa: a GL context through OSMesa or EGL surfaceless, one point per
-// input vector, RGBA32F readback of every output register (architecture.md, Execution
+// input vector, RGBA32F readback of every output register (docs/design/architecture.md, Execution
 // design). Fed from the same input model as the reference interpreter (arbvp/exec.h).
 #pragma once
 

@@ -38,7 +38,8 @@ std::string FirstErrorLine(const MesaVerdict& verdict);
 
 struct MesaOptions {
   // The gallium driver: "softpipe" or "llvmpipe". Anything else is refused before OSMesa is
-  // touched (another GALLIUM_DRIVER value crashes OSMesaCreateContextAttribs: platform.md).
+  // touched (another GALLIUM_DRIVER value crashes OSMesaCreateContextAttribs:
+  // docs/design/platform.md).
   std::string driver = "softpipe";
 };
 

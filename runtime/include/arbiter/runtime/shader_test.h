@@ -1,4 +1,4 @@
-// piglit's shader_runner format (.shader_test; shared/design/formats.md): one file states a
+// piglit's shader_runner format (.shader_test; docs/design/formats.md): one file states a
 // shader and what it must draw. ParseShaderTest reads the sections; RunShaderTests draws each
 // test on Mesa (OSMesa or EGL, softpipe or llvmpipe) in worker processes and evaluates its
 // probes with piglit's tolerance rules. docs/run.md describes the commands and extensions.

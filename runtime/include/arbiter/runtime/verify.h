@@ -1,5 +1,5 @@
-// Differential verification (architecture.md, Verification policy): a program runs on the
-// reference interpreter (ref), on Mesa as ARB assembly (mesa-arb) and on Mesa as its GLSL
+// Differential verification (docs/design/architecture.md, Verification policy): a program runs on
+// the reference interpreter (ref), on Mesa as ARB assembly (mesa-arb) and on Mesa as its GLSL
 // translation (mesa-glsl), over generated edge and random inputs; every written output
 // component is compared with the interpreter's under the tolerance model (docs/verify.md).
 #pragma once

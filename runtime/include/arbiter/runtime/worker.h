@@ -1,6 +1,6 @@
 // The worker process that isolates the GL driver: a job runs in a forked child with a time
 // limit and a memory limit, so a crash, hang or runaway allocation inside Mesa becomes a
-// clean error for the caller (architecture.md, Execution design).
+// clean error for the caller (docs/design/architecture.md, Execution design).
 #pragma once
 
 #include <cstdint>
