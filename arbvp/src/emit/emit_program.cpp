@@ -83,7 +83,12 @@ std::string EmitShader(Context& ctx) {
     if (ctx.options.comments) body += "// " + InstructionComment(ctx, inst) + "\n";
     body += EmitInstruction(ctx, inst);
   }
-  if (ctx.fog_redirect) body += (body.empty() ? "" : "\n") + FogEpilogue(ctx);
+  // Appended piece by piece: GCC 12 at -O3 reads `s += "\n" + t` as an overlapping copy (a
+  // false -Wrestrict in std::string).
+  if (ctx.fog_redirect) {
+    if (!body.empty()) body += '\n';
+    body += FogEpilogue(ctx);
+  }
 
   std::string locals;
   std::string globals;
@@ -108,7 +113,8 @@ std::string EmitShader(Context& ctx) {
     for (size_t e = 0; e < v.bindings.size(); ++e) {
       locals += fmt::format("{}[{}] = {};\n", name, e, ReadBinding(ctx, v.bindings[e]).text);
     }
-    readers += "\n" + RelativeReaderText(ctx, static_cast<int>(i));
+    readers += '\n';
+    readers += RelativeReaderText(ctx, static_cast<int>(i));
   }
   if (p.HasOption(OptionId::PositionInvariant)) {
     locals += "gl_Position = ftransform();  // OPTION ARB_position_invariant\n";
@@ -162,8 +168,14 @@ std::string EmitShader(Context& ctx) {
                          SamplerName(unit), unit, TexTargetName(target));
   }
   decls += globals;
-  if (!decls.empty()) out += "\n" + decls;
-  for (Helper h : ctx.helpers) out += "\n" + HelperText(ctx, h);
+  if (!decls.empty()) {
+    out += '\n';
+    out += decls;
+  }
+  for (Helper h : ctx.helpers) {
+    out += '\n';
+    out += HelperText(ctx, h);
+  }
   out += readers;
   out += "\nvoid main() {\n";
   out += Indent(locals);

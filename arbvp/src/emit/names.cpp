@@ -54,9 +54,11 @@ std::string SanitizeName(const std::string& arb_name) {
     if (g == '_' && !out.empty() && out.back() == '_') continue;  // no "__"
     out += g;
   }
-  if (out.empty() || out == "_") out = "v";
+  // assign(1, c) and insert(0, s): GCC 12 at -O3 takes `out = "v"` and `"u_" + out` for an
+  // overlapping copy (a false -Wrestrict in std::string).
+  if (out.empty() || out == "_") out.assign(1, 'v');
   if (out.rfind("gl_", 0) == 0 || out.rfind("arb_", 0) == 0 || IsReserved(out)) {
-    out = "u_" + out;
+    out.insert(0, "u_");
   }
   if (out.size() > 1 && out.back() == '_' && out[out.size() - 2] == '_') out.pop_back();
   return out;
