@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -120,6 +121,9 @@ void DistributeDiagnostics(compiler::DiagnosticSink* sink,
 
 // Prints the reports in the chosen format (text to stderr, json/sarif to stdout).
 void PrintReports(const std::vector<compiler::FileReport>& reports, const CommonOptions& options);
+// The diagnostics of `reports` as the "diagnostics" member of the JSON documents of info,
+// exec and verify: the entries of check's "files" (docs/json-output.md).
+nlohmann::ordered_json DiagnosticsJson(const std::vector<compiler::FileReport>& reports);
 // The text renderer's options (--color, the terminal); and the printing of reports a batch
 // has rendered as text in its workers, in order, in one write.
 compiler::TextOptions TextOptionsFor(const CommonOptions& options);

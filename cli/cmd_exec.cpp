@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "arbiter/runtime/worker.h"
 #include "cli.h"
 #include "load_arb.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -21,14 +23,11 @@ namespace {
 struct ExecCommandOptions {
   CommonOptions common;  // --format --color --error-limit --stage, the files
   std::string engine = "ref";
-  std::string backend = "osmesa";
-  std::string driver = "softpipe";
+  MesaOptions mesa;
   std::vector<std::string> set;
   std::vector<std::string> state;
   std::vector<std::string> textures;
   std::string vectors;
-  int timeout_ms = 60000;
-  int memory_mib = 8192;
 };
 
 struct EngineRun {
@@ -155,7 +154,8 @@ void PrintText(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
 }
 
 void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Difference>& diffs,
-               const std::vector<std::string>& files) {
+               const std::vector<std::string>& files,
+               const std::vector<compiler::FileReport>& reports) {
   nlohmann::ordered_json j;
   j["files"] = files;
   nlohmann::ordered_json engines = nlohmann::ordered_json::object();
@@ -177,20 +177,43 @@ void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
     j["differences"] = list;
   }
   // A path that is not UTF-8 becomes U+FFFD instead of throwing.
+  j["diagnostics"] = DiagnosticsJson(reports);
   fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
 int RunExec(const ExecCommandOptions& options) {
   runtime::Backend backend = runtime::Backend::OSMesa;
-  if (!runtime::ParseBackend(options.backend, &backend) ||
-      !runtime::IsSupportedMesaDriver(options.driver)) {
-    fmt::print(stderr, "arbiter: error: unknown backend '{}' or driver '{}'\n", options.backend,
-               options.driver);
+  if (!runtime::ParseBackend(options.mesa.backend, &backend) ||
+      !runtime::IsSupportedMesaDriver(options.mesa.driver)) {
+    fmt::print(stderr, "arbiter: error: unknown backend '{}' or driver '{}'\n",
+               options.mesa.backend, options.mesa.driver);
     return static_cast<int>(Exit::Usage);
   }
+  // A program file is never NAME=VALUE: that is a second value given to one --set.
+  for (const std::string& file : options.common.files) {
+    std::error_code ec;
+    if (file.find('=') != std::string::npos && !std::filesystem::exists(file, ec)) {
+      fmt::print(stderr,
+                 "arbiter: error: '{}' is not a file: --set, --state and --texture take one "
+                 "NAME=VALUE each (--set a=1 --set b=2)\n",
+                 file);
+      return static_cast<int>(Exit::Usage);
+    }
+  }
   std::vector<LoadedArb> loaded;
-  Exit exit = LoadArbPrograms(options.common, &loaded);
-  if (exit != Exit::Ok) return static_cast<int>(exit);
+  std::vector<compiler::FileReport> reports;
+  Exit exit = LoadArbPrograms(options.common, "exec", &loaded, &reports);
+  const bool json = options.common.format == "json";
+  if (!json) PrintLoadReports(reports, options.common);
+  if (exit != Exit::Ok) {
+    // JSON: the diagnostics, and no results.
+    if (json && exit != Exit::Usage) {
+      std::vector<std::string> files;
+      for (const LoadedArb& p : loaded) files.push_back(p.input.display_path);
+      PrintJson({}, {}, files, reports);
+    }
+    return static_cast<int>(exit);
+  }
   const LoadedArb* vertex = nullptr;
   const LoadedArb* fragment = nullptr;
   if (!PickPrograms(loaded, &vertex, &fragment)) {
@@ -217,10 +240,10 @@ int RunExec(const ExecCommandOptions& options) {
   if (options.engine == "mesa" || options.engine == "all") {
     runtime::ExecOptions exec;
     exec.backend = backend;
-    exec.driver = options.driver;
+    exec.driver = options.mesa.driver;
     runtime::WorkerLimits limits;
-    limits.timeout_ms = options.timeout_ms;
-    limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+    limits.timeout_ms = options.mesa.timeout_ms;
+    limits.memory_bytes = static_cast<uint64_t>(options.mesa.memory_mib) << 20;
     runtime::ArbPrograms programs;
     programs.vertex = vertex ? vertex->checked.program.get() : nullptr;
     programs.fragment = fragment ? fragment->checked.program.get() : nullptr;
@@ -228,8 +251,8 @@ int RunExec(const ExecCommandOptions& options) {
     std::string error;
     if (runtime::RunArbInWorker(exec, limits, programs, inputs, &run.results, &error) !=
         runtime::WorkerStatus::Ok) {
-      fmt::print(stderr, "arbiter: error: mesa ({}, {}): {}\n", options.backend, options.driver,
-                 error);
+      fmt::print(stderr, "arbiter: error: mesa ({}, {}): {}\n", options.mesa.backend,
+                 options.mesa.driver, error);
       return static_cast<int>(Exit::Environment);
     }
     runs.push_back(std::move(run));
@@ -240,7 +263,7 @@ int RunExec(const ExecCommandOptions& options) {
   std::vector<std::string> files;
   for (const LoadedArb& p : loaded) files.push_back(p.source->path());
   if (options.common.format == "json") {
-    PrintJson(runs, diffs, files);
+    PrintJson(runs, diffs, files, reports);
   } else {
     PrintText(runs, diffs);
   }
@@ -265,38 +288,24 @@ std::function<int()> AddExecCommand(CLI::App* app) {
   exec->add_option("--engine", options->engine,
                    "ref (the reference interpreter), mesa, or all (both, differences marked)")
       ->check(CLI::IsMember({"ref", "mesa", "all"}));
-  exec->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
-  exec->add_option("--driver", options->driver, "Mesa's driver")
-      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
-  exec->add_option("--set", options->set,
-                   "NAME=V1,V2,..: an input for every vector (vertex.attrib[1]=1,2,3,4, "
-                   "fragment.texcoord[0]=.5,.5, program.local[0]=..., vertex.program.env[2]=...)")
-      ->allow_extra_args(false);
-  exec->add_option("--state", options->state,
-                   "NAME=V1,..: GL state (state.light[0].diffuse=1,0,0,1, "
-                   "state.matrix.modelview=<16 numbers, row-major>, state.fog.density=2, ...)")
-      ->allow_extra_args(false);
-  exec->add_option("--texture", options->textures,
-                   "UNIT=TARGET:PATTERN[:WxH[xD]][:nearest|linear][:repeat|clamp|mirror], e.g. "
-                   "0=2d:checker:4x4:linear (patterns: checker, gradient, depth-gradient, "
-                   "depth-gradient-compare)")
-      ->allow_extra_args(false);
+  AddRepeatedOption(exec, "--set", &options->set, "NAME=V1,..",
+                    "an input for every vector, one per --set (vertex.attrib[1]=1,2,3,4, "
+                    "fragment.texcoord[0]=.5,.5, program.local[0]=..., vertex.program.env[2]=...)");
+  AddRepeatedOption(exec, "--state", &options->state, "NAME=V1,..",
+                    "GL state, one per --state (state.light[0].diffuse=1,0,0,1, "
+                    "state.matrix.modelview=<16 numbers, row-major>, state.fog.density=2, ...)");
+  AddRepeatedOption(exec, "--texture", &options->textures, "UNIT=TARGET:PATTERN..",
+                    "one per --texture: UNIT=TARGET:PATTERN[:WxH[xD]][:nearest|linear]"
+                    "[:repeat|clamp|mirror], e.g. 0=2D:checker:4x4:linear (patterns: checker, "
+                    "gradient, depth-gradient, depth-gradient-compare)");
   exec->add_option("--vectors", options->vectors,
                    "a JSON file of inputs: {\"set\": {...}, \"textures\": {...}, \"vectors\": "
                    "[{...}, ...]} (docs/exec.md)");
-  exec->add_option("--format", common.format, "output format")
-      ->check(CLI::IsMember({"text", "json"}));
-  exec->add_option("--color", common.color, "colour diagnostics")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
-  exec->add_option("--stage", common.stage, "the kind of a program read from stdin")
-      ->check(CLI::IsMember({"arbvp", "arbfp"}));
-  exec->add_option("--error-limit", common.error_limit, "stop reporting errors after N")
-      ->check(CLI::NonNegativeNumber);
-  exec->add_option("--timeout", options->timeout_ms, "time limit of the Mesa worker, ms")
-      ->check(CLI::Range(100, 3600000));
-  exec->add_option("--memory-limit", options->memory_mib, "memory limit of the Mesa worker, MiB")
-      ->check(CLI::Range(256, 1 << 20));
+  AddFormatOption(exec, &common.format, {"text", "json"});
+  AddColorOption(exec, &common.color);
+  AddStageOption(exec, &common.stage, /*glsl=*/false);
+  AddErrorLimitOption(exec, &common.error_limit);
+  AddMesaOptions(exec, &options->mesa, "of the Mesa worker");
   return [options] { return RunExec(*options); };
 }
 

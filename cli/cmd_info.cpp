@@ -257,6 +257,7 @@ int RunInfo(const CommonOptions& options) {
   if (options.format == "json") {
     nlohmann::ordered_json doc;
     doc["programs"] = out.programs;
+    doc["diagnostics"] = DiagnosticsJson(out.failed);
     // A path that is not UTF-8 becomes U+FFFD instead of throwing.
     const std::string text =
         doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
@@ -264,7 +265,7 @@ int RunInfo(const CommonOptions& options) {
   } else {
     std::fputs(out.text.c_str(), stdout);
   }
-  if (!out.failed.empty()) {
+  if (!out.failed.empty() && options.format != "json") {
     CommonOptions diag_options = options;
     if (diag_options.format != "text") diag_options.format = "text";
     PrintReports(out.failed, diag_options);

@@ -6,6 +6,7 @@
 
 #include "arbiter/glsl/link.h"
 #include "cli.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -102,17 +103,13 @@ std::function<int()> AddLinkCommand(CLI::App* app) {
   link->add_option("--vert", options->vert, "the vertex shader's files, in order (one shader)");
   link->add_option("--frag", options->frag, "the fragment shader's files, in order (one shader)");
   CommonOptions& common = options->common;
-  link->add_option("--format", common.format, "output format")
-      ->check(CLI::IsMember({"text", "json", "sarif"}));
-  link->add_option("--color", common.color, "colour text output")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
+  AddFormatOption(link, &common.format, {"text", "json", "sarif"});
+  AddColorOption(link, &common.color);
   link->add_option("--limits", common.limits,
                    "limit profile: spec-min, mesa, or a JSON file (default: portability "
                    "warnings)");
-  link->add_option("--error-limit", common.error_limit,
-                   "stop reporting errors after N (0: no limit)")
-      ->check(CLI::NonNegativeNumber);
-  link->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
+  AddErrorLimitOption(link, &common.error_limit);
+  AddWerrorFlag(link, &common.werror);
   AddGlslOptions(link, &common);
   return [options] { return RunLink(*options); };
 }

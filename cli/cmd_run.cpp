@@ -13,6 +13,7 @@
 #include "arbiter/compiler/source.h"
 #include "arbiter/runtime/shader_test.h"
 #include "cli.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -22,14 +23,11 @@ namespace fs = std::filesystem;
 struct RunCommandOptions {
   std::vector<std::string> files;
   bool translate = false;
-  std::string backend = "osmesa";
-  std::string driver = "softpipe";
+  MesaOptions mesa;
   int jobs = 0;
   std::string format = "text";
   std::string junit;
   std::string png;
-  int timeout_ms = 60000;
-  int memory_mib = 8192;
 };
 
 // The tests of the arguments: files as given, directories searched (recursively, sorted)
@@ -108,15 +106,15 @@ nlohmann::ordered_json ResultJson(const runtime::ShaderTestResult& r) {
 
 int RunTests(const RunCommandOptions& options) {
   runtime::RunOptions run;
-  if (!runtime::ParseBackend(options.backend, &run.exec.backend)) {
+  if (!runtime::ParseBackend(options.mesa.backend, &run.exec.backend)) {
     return static_cast<int>(Exit::Usage);
   }
-  run.exec.driver = options.driver;
+  run.exec.driver = options.mesa.driver;
   run.translate = options.translate;
   run.jobs = options.jobs > 0 ? options.jobs
                               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  run.limits.timeout_ms = options.timeout_ms;
-  run.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+  run.limits.timeout_ms = options.mesa.timeout_ms;
+  run.limits.memory_bytes = static_cast<uint64_t>(options.mesa.memory_mib) << 20;
   std::vector<std::string> paths;
   Exit exit = ExpandTests(options.files, &paths, &run.png_names) ? Exit::Ok : Exit::Rejected;
   if (!options.png.empty()) {
@@ -155,8 +153,8 @@ int RunTests(const RunCommandOptions& options) {
   }
   if (options.format == "json") {
     nlohmann::ordered_json j;
-    j["driver"] = options.driver;
-    j["backend"] = options.backend;
+    j["driver"] = options.mesa.driver;
+    j["backend"] = options.mesa.backend;
     j["translate"] = options.translate;
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     for (const runtime::ShaderTestResult& r : results) tests.push_back(ResultJson(r));
@@ -169,7 +167,7 @@ int RunTests(const RunCommandOptions& options) {
   } else {
     for (const runtime::ShaderTestResult& r : results) PrintResult(r);
     fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,
-               options.driver, options.backend,
+               options.mesa.driver, options.mesa.backend,
                options.translate ? ", ARB translated to GLSL" : "");
   }
   if (failed > 0) exit = Worse(exit, Exit::Rejected);
@@ -201,20 +199,11 @@ std::function<int()> AddRunCommand(CLI::App* app) {
   cmd->add_option("files", options->files, "shader tests (directories are searched)")->required();
   cmd->add_flag("--translate", options->translate,
                 "run ARB programs as arbiter's GLSL translation instead of Mesa's ARB path");
-  cmd->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
-  cmd->add_option("--driver", options->driver, "Mesa's driver")
-      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
-  cmd->add_option("-j,--jobs", options->jobs, "worker processes (default: one per core)")
-      ->check(CLI::Range(0, 256));
-  cmd->add_option("--format", options->format, "output format")
-      ->check(CLI::IsMember({"text", "json"}));
+  AddMesaOptions(cmd, &options->mesa, "per test");
+  AddJobsOption(cmd, &options->jobs, "worker processes");
+  AddFormatOption(cmd, &options->format, {"text", "json"});
   cmd->add_option("--junit", options->junit, "also write the results as JUnit XML to this file");
   cmd->add_option("--png", options->png, "save each test's picture as PNG under this folder");
-  cmd->add_option("--timeout", options->timeout_ms, "time limit per test, ms")
-      ->check(CLI::Range(100, 3600000));
-  cmd->add_option("--memory-limit", options->memory_mib, "memory limit of a worker, MiB")
-      ->check(CLI::Range(256, 1 << 20));
   return [options] { return RunTests(*options); };
 }
 

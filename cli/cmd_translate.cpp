@@ -13,6 +13,7 @@
 #include "arbiter/runtime/translate.h"
 #include "cli.h"
 #include "load_arb.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -47,14 +48,6 @@ struct Outcome {
   std::string out;  // stdout
   std::string err;  // stderr
 };
-
-bool Write(const std::string& path, const std::string& text, Outcome* outcome) {
-  std::string error;
-  if (compiler::WriteFileAtomically(path, text, &error)) return true;
-  outcome->err += fmt::format("arbiter: error: cannot write '{}': {}\n", path, error);
-  outcome->exit = Exit::Environment;
-  return false;
-}
 
 // Where a job's files go: `base` + ".vert"/".frag", and the binding map, when writing files.
 struct Destination {
@@ -116,7 +109,10 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
     outcome.exit = Exit::Environment;
     return outcome;
   }
+  // Every output of the job is written, or none (compiler::WriteFilesAtomically), and stdout
+  // gets the GLSL only once the files are written.
   Destination d = Place(options, job, several);
+  std::vector<compiler::FileToWrite> files;
   if (d.to_stdout) {
     if (!t.vertex.empty() && !t.fragment.empty()) {
       outcome.out = fmt::format("// ---- vertex shader ----\n{}// ---- fragment shader ----\n{}",
@@ -125,16 +121,18 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
       outcome.out = t.vertex.empty() ? t.fragment : t.vertex;
     }
   } else {
-    if (!t.vertex.empty() &&
-        !Write(ShaderPath(options, d, several, job, true), t.vertex, &outcome)) {
-      return outcome;
-    }
-    if (!t.fragment.empty() &&
-        !Write(ShaderPath(options, d, several, job, false), t.fragment, &outcome)) {
-      return outcome;
+    if (!t.vertex.empty()) files.push_back({ShaderPath(options, d, several, job, true), t.vertex});
+    if (!t.fragment.empty()) {
+      files.push_back({ShaderPath(options, d, several, job, false), t.fragment});
     }
   }
-  if (!d.bindings.empty()) Write(d.bindings, arbvp::BindingMapToJson(t.bindings), &outcome);
+  if (!d.bindings.empty()) files.push_back({d.bindings, arbvp::BindingMapToJson(t.bindings)});
+  std::string error;
+  if (!compiler::WriteFilesAtomically(files, &error)) {
+    outcome.err += fmt::format("arbiter: error: {}; nothing was written for {}\n", error, name);
+    outcome.exit = Exit::Environment;
+    outcome.out.clear();
+  }
   return outcome;
 }
 
@@ -144,9 +142,18 @@ int RunTranslate(const TranslateCommandOptions& options) {
     fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
     return static_cast<int>(Exit::Usage);
   }
+  std::vector<LoadedArb> all;
+  std::vector<compiler::FileReport> reports;
+  Exit exit = LoadArbPrograms(options.common, "translate", &all, &reports);
+  PrintLoadReports(reports, options.common);
+  if (exit == Exit::Usage) return static_cast<int>(exit);
+  // A rejected program is reported and skipped; the others are translated (exit 1 then).
   std::vector<LoadedArb> loaded;
-  Exit exit = LoadArbPrograms(options.common, &loaded);
-  if (exit != Exit::Ok) return static_cast<int>(exit);
+  for (LoadedArb& l : all) {
+    if (l.ok()) loaded.push_back(std::move(l));
+  }
+  const size_t rejected = all.size() - loaded.size();
+  if (loaded.empty() || (options.pair && exit != Exit::Ok)) return static_cast<int>(exit);
 
   std::vector<Job> jobs;
   if (options.pair) {
@@ -172,9 +179,12 @@ int RunTranslate(const TranslateCommandOptions& options) {
       jobs.push_back(job);
     }
   }
-  const bool several = jobs.size() > 1;
-  if (several && options.output.empty() && !options.bindings.empty()) {
-    fmt::print(stderr, "arbiter: error: several programs need -o DIR for their shaders\n");
+  // Several inputs write a directory, even when all but one were rejected.
+  const bool several = jobs.size() + rejected > 1;
+  if (several && options.output.empty()) {
+    fmt::print(stderr,
+               "arbiter: error: several programs need -o DIR: one shader per program, not all "
+               "of them on stdout\n");
     return static_cast<int>(Exit::Usage);
   }
   for (const std::string* dir : {&options.output, &options.bindings}) {
@@ -227,6 +237,10 @@ int RunTranslate(const TranslateCommandOptions& options) {
     std::fwrite(o.out.data(), 1, o.out.size(), stdout);
     exit = Worse(exit, o.exit);
   }
+  if (rejected > 0) {
+    fmt::print(stderr, "arbiter: {} of {} programs rejected (above); the other {} translated\n",
+               rejected, rejected + jobs.size(), jobs.size());
+  }
   return static_cast<int>(exit);
 }
 
@@ -252,16 +266,12 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
   cmd->add_flag("--pair", options->pair, "translate a vertex and a fragment program as a pair");
   cmd->add_flag("--no-comments", options->no_comments,
                 "do not precede statements with the ARB instruction");
-  cmd->add_option("--stage", common.stage, "the kind of a program read from stdin")
-      ->check(CLI::IsMember({"arbvp", "arbfp"}));
+  AddStageOption(cmd, &common.stage, /*glsl=*/false);
   cmd->add_option("--limits", common.limits, "limit profile for checking the inputs");
-  cmd->add_option("--color", common.color, "colour diagnostics")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
-  cmd->add_option("--error-limit", common.error_limit, "stop reporting errors after N")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("-W,--Werror", common.werror, "treat warnings as errors");
-  cmd->add_option("-j,--jobs", common.jobs, "worker threads (default: one per core)")
-      ->check(CLI::Range(0, 256));
+  AddColorOption(cmd, &common.color);
+  AddErrorLimitOption(cmd, &common.error_limit);
+  AddWerrorFlag(cmd, &common.werror);
+  AddJobsOption(cmd, &common.jobs, "worker threads");
   // Test-only: inject one translator bug, to prove that `verify` catches it.
   cmd->add_option("--mutation", options->mutation)->group("");
   return [options] { return RunTranslate(*options); };

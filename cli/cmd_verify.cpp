@@ -14,6 +14,7 @@
 #include "arbiter/runtime/verify.h"
 #include "cli.h"
 #include "load_arb.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -26,10 +27,7 @@ struct VerifyCommandOptions {
   uint64_t seed = 1;
   bool pair = false;
   int max_reports = 10;
-  std::string backend = "osmesa";
-  std::string driver = "softpipe";
-  int timeout_ms = 60000;
-  int memory_mib = 8192;
+  MesaOptions mesa{.timeout_ms = 20000};
   std::string mutation = "none";  // test-only (hidden)
 };
 
@@ -64,7 +62,7 @@ std::string Summary(const runtime::Verdict& v) {
 }
 
 void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyCommandOptions& options,
-               const std::string& setup) {
+               const std::string& setup, size_t rejected) {
   std::string out;
   size_t agree = 0;
   size_t disagree = 0;
@@ -106,8 +104,10 @@ void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyComman
       out += fmt::format("  known deviation {} ({} components)\n", name, count);
     }
   }
-  out += fmt::format("verify: {} program(s): {} agree, {} disagree, {} error(s) ({})\n",
-                     verdicts.size(), agree, disagree, errors, setup);
+  std::string not_run =
+      rejected > 0 ? fmt::format(", {} rejected by the checker (not run)", rejected) : "";
+  out += fmt::format("verify: {} program(s): {} agree, {} disagree, {} error(s){} ({})\n",
+                     verdicts.size() + rejected, agree, disagree, errors, not_run, setup);
   fmt::print("{}", out);
 }
 
@@ -169,13 +169,13 @@ bool Subjects(const VerifyCommandOptions& options, const std::vector<LoadedArb>&
 
 int RunVerify(const VerifyCommandOptions& options) {
   runtime::VerifyOptions verify;
-  if (!runtime::ParseBackend(options.backend, &verify.exec.backend)) {
+  if (!runtime::ParseBackend(options.mesa.backend, &verify.exec.backend)) {
     return static_cast<int>(Exit::Usage);
   }
-  verify.exec.driver = options.driver;
+  verify.exec.driver = options.mesa.driver;
   verify.jobs = static_cast<int>(ResolveJobs(options.common));
-  verify.limits.timeout_ms = options.timeout_ms;
-  verify.limits.memory_bytes = static_cast<uint64_t>(options.memory_mib) << 20;
+  verify.limits.timeout_ms = options.mesa.timeout_ms;
+  verify.limits.memory_bytes = static_cast<uint64_t>(options.mesa.memory_mib) << 20;
   verify.generate.random_vectors = options.vectors;
   verify.generate.seed = options.seed;
   auto has = [&](const char* e) {
@@ -195,8 +195,12 @@ int RunVerify(const VerifyCommandOptions& options) {
   }
 
   std::vector<LoadedArb> loaded;
-  Exit exit = LoadArbPrograms(options.common, &loaded);
+  std::vector<compiler::FileReport> reports;
+  Exit exit = LoadArbPrograms(options.common, "verify", &loaded, &reports);
+  if (options.common.format != "json") PrintLoadReports(reports, options.common);
   if (exit == Exit::Usage) return static_cast<int>(exit);
+  size_t rejected = 0;
+  for (const LoadedArb& l : loaded) rejected += l.ok() ? 0 : 1;
   std::vector<LoadedArb> valid;
   for (LoadedArb& l : loaded) {
     if (l.ok()) valid.push_back(std::move(l));
@@ -214,23 +218,24 @@ int RunVerify(const VerifyCommandOptions& options) {
     if (!v.disagreements.empty()) exit = Worse(exit, Exit::Rejected);
   }
   std::string setup = fmt::format("seed {}, {} random vectors, {} via {}", options.seed,
-                                  options.vectors, options.driver, options.backend);
+                                  options.vectors, options.mesa.driver, options.mesa.backend);
   if (options.common.format == "json") {
     nlohmann::ordered_json j;
     j["seed"] = options.seed;
     j["random_vectors"] = options.vectors;
-    j["driver"] = options.driver;
-    j["backend"] = options.backend;
+    j["driver"] = options.mesa.driver;
+    j["backend"] = options.mesa.backend;
     j["engines"] = options.engines;
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const runtime::Verdict& v : verdicts) {
       list.push_back(VerdictJson(v, static_cast<size_t>(options.max_reports)));
     }
     j["programs"] = list;
+    j["diagnostics"] = DiagnosticsJson(reports);
     // A path that is not UTF-8 becomes U+FFFD instead of throwing.
     fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
   } else {
-    PrintText(verdicts, options, setup);
+    PrintText(verdicts, options, setup, rejected);
   }
   return static_cast<int>(exit);
 }
@@ -263,23 +268,11 @@ std::function<int()> AddVerifyCommand(CLI::App* app) {
   cmd->add_flag("--pair", options->pair, "verify a vertex and a fragment program as a pair");
   cmd->add_option("--max-reports", options->max_reports, "disagreements printed per program (text)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--backend", options->backend, "Mesa through osmesa or egl (surfaceless)")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
-  cmd->add_option("--driver", options->driver, "Mesa's driver")
-      ->check(CLI::IsMember({"softpipe", "llvmpipe"}));
-  cmd->add_option("--format", common.format, "output format")
-      ->check(CLI::IsMember({"text", "json"}));
-  cmd->add_option("--color", common.color, "colour diagnostics")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
-  cmd->add_option("--stage", common.stage, "the kind of a program read from stdin")
-      ->check(CLI::IsMember({"arbvp", "arbfp"}));
-  cmd->add_option("-j,--jobs", common.jobs, "worker processes (default: one per core)")
-      ->check(CLI::Range(0, 256));
-  cmd->add_option("--timeout", options->timeout_ms,
-                  "time limit of the Mesa engines, ms per program")
-      ->check(CLI::Range(100, 3600000));
-  cmd->add_option("--memory-limit", options->memory_mib, "memory limit of the Mesa worker, MiB")
-      ->check(CLI::Range(256, 1 << 20));
+  AddMesaOptions(cmd, &options->mesa, "of the Mesa engines per program");
+  AddFormatOption(cmd, &common.format, {"text", "json"});
+  AddColorOption(cmd, &common.color);
+  AddStageOption(cmd, &common.stage, /*glsl=*/false);
+  AddJobsOption(cmd, &common.jobs, "worker processes");
   cmd->add_option("--mutation", options->mutation)->group("");
   return [options] { return RunVerify(*options); };
 }

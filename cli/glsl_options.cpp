@@ -7,6 +7,7 @@
 #include "arbiter/glsl/check.h"
 #include "arbiter/glsl/link.h"
 #include "cli.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -47,20 +48,16 @@ bool ParseWarningSwitch(const std::string& value, compiler::WarningPolicy* polic
 }  // namespace
 
 void AddGlslOptions(CLI::App* app, CommonOptions* options) {
-  app->add_option("-D,--define", options->defines,
-                  "GLSL: define a macro before the shader (NAME or NAME=VALUE); repeatable")
-      ->allow_extra_args(false);
-  app->add_option("-U,--undefine", options->undefines,
-                  "GLSL: undefine a macro -D defined; repeatable")
-      ->allow_extra_args(false);
-  app->add_option("-I,--include-dir", options->include_dirs,
-                  "GLSL: where #include looks (GL_ARB_shading_language_include); repeatable")
-      ->allow_extra_args(false);
+  AddRepeatedOption(app, "-D,--define", &options->defines, "NAME[=VALUE]",
+                    "GLSL: define a macro before the shader; repeatable");
+  AddRepeatedOption(app, "-U,--undefine", &options->undefines, "NAME",
+                    "GLSL: undefine a macro -D defined; repeatable");
+  AddRepeatedOption(app, "-I,--include-dir", &options->include_dirs, "DIR",
+                    "GLSL: where #include looks (GL_ARB_shading_language_include); repeatable");
   app->add_option("--preamble", options->preamble,
                   "GLSL: a file of text the application puts after #version");
-  app->add_option("--warning", options->warnings,
-                  "-W<code>, -Wno-<code>, -Werror=<code>: switch one warning")
-      ->allow_extra_args(false);
+  AddRepeatedOption(app, "--warning", &options->warnings, "CODE",
+                    "-W<code>, -Wno-<code>, -Werror=<code>: switch one warning");
 }
 
 std::optional<Exit> ResolveGlslSetup(const CommonOptions& options, GlslSetup* out) {

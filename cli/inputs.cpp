@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "cli.h"
+#include "options.h"
 
 namespace arbiter::cli {
 namespace {
@@ -260,23 +261,18 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
   app->add_option("files", options->files, "program files or directories ('-' reads stdin)")
       ->required();
   // SARIF reports diagnostics: info has none to give.
-  app->add_option("--format", options->format, "output format")
-      ->check(diagnostics ? CLI::IsMember({"text", "json", "sarif"})
-                          : CLI::IsMember({"text", "json"}));
-  app->add_option("--color", options->color, "colour text output")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
+  AddFormatOption(app, &options->format,
+                  diagnostics ? std::vector<std::string>{"text", "json", "sarif"}
+                              : std::vector<std::string>{"text", "json"});
+  AddColorOption(app, &options->color);
   app->add_option("--limits", options->limits,
-                  "limit profile: spec-min, mesa, or a JSON file (default: portability "
-                  "warnings)");
-  app->add_option("--stage", options->stage, "program kind instead of the header's")
-      ->check(CLI::IsMember({"arbvp", "arbfp", "vert", "frag"}));
+                  "limit profile: spec-min, mesa, r300, r500, i915, nv30, nv40, or a JSON file "
+                  "(default: mesa, without warnings past the spec minimums)");
+  AddStageOption(app, &options->stage, /*glsl=*/true);
   if (diagnostics) {
-    app->add_option("--error-limit", options->error_limit,
-                    "stop reporting errors of a file after N (0: no limit)")
-        ->check(CLI::NonNegativeNumber);
-    app->add_flag("-W,--Werror", options->werror, "treat warnings as errors");
-    app->add_option("-j,--jobs", options->jobs, "worker threads (default: one per core)")
-        ->check(CLI::NonNegativeNumber);
+    AddErrorLimitOption(app, &options->error_limit);
+    AddWerrorFlag(app, &options->werror);
+    AddJobsOption(app, &options->jobs, "worker threads");
   }
 }
 

@@ -1,13 +1,27 @@
 #include "load_arb.h"
 
-namespace arbiter::cli {
+#include <fmt/format.h>
 
-Exit LoadArbPrograms(const CommonOptions& options, std::vector<LoadedArb>* loaded) {
+namespace arbiter::cli {
+namespace {
+
+// Whether an input that is no ARB program is a GLSL shader: by its name, or by its text.
+bool LooksLikeGlsl(const Input& input, std::string_view text) {
+  if (glsl::StageFromPath(input.path)) return true;
+  for (std::string_view word : {"#version", "void main", "gl_Position", "gl_FragColor"}) {
+    if (text.find(word) != std::string_view::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Exit LoadArbPrograms(const CommonOptions& options, std::string_view command,
+                     std::vector<LoadedArb>* loaded, std::vector<compiler::FileReport>* reports) {
   std::optional<arbvp::ProgramKind> stage;
   if (!ResolveStage(options, &stage)) return Exit::Usage;
   std::optional<compiler::LimitProfile> profile;
   if (!ResolveLimits(options, &profile)) return Exit::Usage;
-  std::vector<compiler::FileReport> reports;
   Exit exit = Exit::Ok;
   for (const Input& input : ExpandInputs(options.files, ResolveJobs(options))) {
     // A directory may hold GLSL shaders beside the ARB programs: those are check's alone.
@@ -30,14 +44,29 @@ Exit LoadArbPrograms(const CommonOptions& options, std::vector<LoadedArb>* loade
       }
       report.diagnostics = std::move(sink.diagnostics());
       report.dropped_errors = sink.dropped();
+      const std::string_view text = l.source->text();
+      if (!arbvp::LooksLikeArbProgram(text) && !report.diagnostics.empty() &&
+          LooksLikeGlsl(input, text)) {
+        report.diagnostics.front().notes.push_back(
+            {nullptr,
+             {},
+             fmt::format("this is a GLSL shader: 'arbiter {}' takes ARB programs; 'arbiter "
+                         "check', 'info', 'link' and 'run' take GLSL",
+                         command)});
+      }
       loaded->push_back(std::move(l));
     }
-    if (!report.diagnostics.empty()) reports.push_back(std::move(report));
+    if (!report.diagnostics.empty()) reports->push_back(std::move(report));
   }
+  return exit;
+}
+
+void PrintLoadReports(const std::vector<compiler::FileReport>& reports,
+                      const CommonOptions& options) {
+  if (reports.empty()) return;
   CommonOptions text = options;
   text.format = "text";
-  if (!reports.empty()) PrintReports(reports, text);
-  return exit;
+  PrintReports(reports, text);
 }
 
 }  // namespace arbiter::cli

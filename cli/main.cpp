@@ -1,11 +1,16 @@
 // The arbiter command: dispatches to one verb per subcommand.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "arbiter/compiler/suggest.h"
 #include "cli.h"
 #include "driver_check.h"
 
@@ -20,14 +25,43 @@ std::function<int()> AddTranslateCommand(CLI::App* app);
 std::function<int()> AddVerifyCommand(CLI::App* app);
 // cmd_run.cpp: adds the `run` subcommand.
 std::function<int()> AddRunCommand(CLI::App* app);
+
+// The first argument when it is no command: `help [COMMAND]` prints the help, anything else
+// that is not an option is an unknown command, with the nearest one suggested. Returns the
+// exit code then; nullopt lets the parser go on.
+std::optional<int> HandleCommandWord(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  std::string_view word = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  if (std::find(names.begin(), names.end(), word) != names.end()) return std::nullopt;
+  if (word == "help") {
+    const CLI::App* topic = nullptr;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      if (argc > 2 && sub->get_name() == argv[2]) topic = sub;
+    }
+    std::fputs(topic != nullptr ? topic->help("arbiter").c_str() : app.help().c_str(), stdout);
+    return 0;
+  }
+  const std::string nearest =
+      compiler::ClosestMatch(word, std::vector<std::string_view>(names.begin(), names.end()));
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  std::string hint = nearest.empty() ? "" : fmt::format(" (did you mean '{}'?)", nearest);
+  fmt::print(stderr, "arbiter: error: unknown command '{}'{}\ncommands: {} (arbiter --help)\n",
+             word, hint, list);
+  return static_cast<int>(Exit::Usage);
+}
+
 }  // namespace arbiter::cli
 
 int main(int argc, char** argv) {
   using arbiter::cli::CommonOptions;
   using arbiter::cli::Exit;
-  CLI::App app{"arbiter: check, translate and execute legacy OpenGL shader programs"};
-  app.set_version_flag("--version", ARBITER_VERSION);
+  CLI::App app{"arbiter: check, translate and execute legacy OpenGL shader programs", "arbiter"};
+  app.set_version_flag("-V,--version", ARBITER_VERSION);
   app.require_subcommand(1);
+  app.footer("Run 'arbiter COMMAND --help' for a command's options.");
 
   CommonOptions check_options;
   CLI::App* check = app.add_subcommand(
@@ -51,6 +85,7 @@ int main(int argc, char** argv) {
   std::function<int()> run_verify = arbiter::cli::AddVerifyCommand(&app);
   std::function<int()> run_tests = arbiter::cli::AddRunCommand(&app);
 
+  if (std::optional<int> code = arbiter::cli::HandleCommandWord(app, argc, argv)) return *code;
   try {
     // "-Werror" is the spelling compilers use; CLI11 would read it as -W followed by
     // "-error", so it is passed on as --Werror; -W<code>, -Wno-<code> and -Werror=<code>

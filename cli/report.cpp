@@ -8,6 +8,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli.h"
@@ -75,6 +76,11 @@ void PrintReports(const std::vector<compiler::FileReport>& reports, const Common
     return;
   }
   std::fflush(stdout);
+}
+
+nlohmann::ordered_json DiagnosticsJson(const std::vector<compiler::FileReport>& reports) {
+  if (reports.empty()) return nlohmann::ordered_json::array();
+  return nlohmann::ordered_json::parse(compiler::RenderJson(reports))["files"];
 }
 
 void DistributeDiagnostics(compiler::DiagnosticSink* sink,

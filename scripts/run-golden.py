@@ -45,9 +45,12 @@ def main():
     ap.add_argument("binary")
     ap.add_argument("verb_dir")
     ap.add_argument("--update", action="store_true")
+    ap.add_argument("--only", action="append", default=[],
+                    help="run (or update) only this input; repeatable")
     args = ap.parse_args()
     binary = os.path.abspath(args.binary)
-    names = sorted(n for n in os.listdir(args.verb_dir) if n.endswith(EXTS))
+    names = sorted(n for n in os.listdir(args.verb_dir)
+                   if n.endswith(EXTS) and (not args.only or n in args.only))
     passed = failed = 0
     for name in names:
         got = run_case(binary, args.verb_dir, name)

@@ -16,11 +16,14 @@
 #include <limits>
 #include <string>
 
+#include "arbiter/compiler/suggest.h"
 #include "diag.h"
 #include "flat_table.h"
-#include "suggest.h"
 
 namespace arbiter::arbvp {
+
+using compiler::ClosestMatch;
+using compiler::JoinAlternatives;
 namespace {
 
 using compiler::DiagnosticSink;

@@ -26,7 +26,15 @@ Reflection Reflect(const Program& program, const Stats& stats) {
       if (b.kind == BindingKind::ProgramLocal) local.insert(b.index);
       if (b.kind == BindingKind::State) state.insert(BindingName(b, program.kind));
     }
-    (var.kind == VarKind::Attrib ? r.attributes : r.parameters).push_back(std::move(rv));
+    // Each use of an inline binding (`MOV R0, vertex.position;`) is a variable of its own in
+    // the IR; a reader wants the binding once.
+    std::vector<ReflectedVariable>& list =
+        var.kind == VarKind::Attrib ? r.attributes : r.parameters;
+    const bool repeated =
+        rv.name.empty() && std::any_of(list.begin(), list.end(), [&](const auto& v) {
+          return v.name.empty() && v.bindings == rv.bindings;
+        });
+    if (!repeated) list.push_back(std::move(rv));
   }
   r.env_indices.assign(env.begin(), env.end());
   r.local_indices.assign(local.begin(), local.end());

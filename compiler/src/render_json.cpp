@@ -77,7 +77,8 @@ std::string RenderJson(const std::vector<FileReport>& reports) {
     int errors = report.dropped_errors;
     int warnings = 0;
     Json diagnostics = Json::array();
-    for (const Diagnostic& diag : report.diagnostics) {
+    for (const Diagnostic* d : InPositionOrder(report)) {
+      const Diagnostic& diag = *d;
       errors += diag.severity == Severity::Error ? 1 : 0;
       warnings += diag.severity == Severity::Warning ? 1 : 0;
       diagnostics.push_back(DiagnosticJson(report, diag));

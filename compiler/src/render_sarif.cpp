@@ -112,7 +112,8 @@ std::string RenderSarif(const std::vector<FileReport>& reports, const std::strin
   Json notifications = Json::array();
 
   for (const FileReport& report : reports) {
-    for (const Diagnostic& diag : report.diagnostics) {
+    for (const Diagnostic* d : InPositionOrder(report)) {
+      const Diagnostic& diag = *d;
       Json result = Json::object();
       if (diag.info != nullptr) {
         auto [it, added] = rule_index.try_emplace(diag.info->code, rules.size());

@@ -182,7 +182,8 @@ void AppendSnippet(std::string* out, const SourceFile& file, Range range, bool u
 
 std::string RenderText(const FileReport& report, const TextOptions& options) {
   std::string out;
-  for (const Diagnostic& diag : report.diagnostics) {
+  for (const Diagnostic* d : InPositionOrder(report)) {
+    const Diagnostic& diag = *d;
     const std::string_view code = diag.info != nullptr ? diag.info->code : std::string_view();
     AppendHeader(&out, PathOf(report, diag.file, diag.path), diag.file, diag.range.begin,
                  diag.severity, diag.message, code, options.color);

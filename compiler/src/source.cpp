@@ -212,7 +212,12 @@ ReadOutcome ReadFileOrDirectory(const std::string& path, std::string* bytes, std
   return ok && CheckSize(*bytes, error) ? ReadOutcome::Read : ReadOutcome::Failed;
 }
 
-bool WriteFileAtomically(const std::string& path, std::string_view bytes, std::string* error) {
+namespace {
+
+// Writes `bytes` to a new hidden temporary beside `path` (fsync'd, with the mode of the file it
+// will replace) and sets `*temp` to its name; the first half of an atomic write.
+bool WriteTemporary(const std::string& path, std::string_view bytes, std::string* temp_out,
+                    std::string* error) {
   namespace fs = std::filesystem;
   const fs::path target(path);
   if (target.filename().empty()) {
@@ -287,14 +292,55 @@ bool WriteFileAtomically(const std::string& path, std::string_view bytes, std::s
   if (closed != 0) {
     return fail(errno);
   }
+  *temp_out = temp;
+  return true;
+}
+
+// The second half: the temporary replaces `path` (removed when that fails).
+bool Publish(const std::string& temp, const std::string& path, std::string* error) {
   if (::rename(temp.c_str(), path.c_str()) != 0) {
-    return fail(errno);
+    *error = ErrnoReason(errno);
+    ::unlink(temp.c_str());
+    return false;
   }
   // Make the rename itself durable; a failure here does not undo the write.
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
   const int folder_fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (folder_fd >= 0) {
     ::fsync(folder_fd);
     ::close(folder_fd);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool WriteFileAtomically(const std::string& path, std::string_view bytes, std::string* error) {
+  std::string temp;
+  return WriteTemporary(path, bytes, &temp, error) && Publish(temp, path, error);
+}
+
+bool WriteFilesAtomically(const std::vector<FileToWrite>& files, std::string* error) {
+  std::vector<std::string> temps;
+  for (const FileToWrite& f : files) {
+    std::string temp;
+    std::string reason;
+    if (!WriteTemporary(f.path, f.bytes, &temp, &reason)) {
+      for (const std::string& t : temps) ::unlink(t.c_str());
+      *error = fmt::format("cannot write '{}': {}", f.path, reason);
+      return false;
+    }
+    temps.push_back(std::move(temp));
+  }
+  // Every file is on disk: only renames are left, which fail only if a folder goes away.
+  for (size_t i = 0; i < files.size(); ++i) {
+    std::string reason;
+    if (!Publish(temps[i], files[i].path, &reason)) {
+      for (size_t j = i + 1; j < temps.size(); ++j) ::unlink(temps[j].c_str());
+      *error = fmt::format("cannot write '{}': {}", files[i].path, reason);
+      return false;
+    }
   }
   return true;
 }

@@ -1,4 +1,5 @@
 // ParseShaderTest and JunitXml: the sections of a .shader_test and the report CI reads (no GL).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "arbiter/runtime/shader_test.h"
@@ -69,13 +70,26 @@ TEST(ShaderTestParseTest, RejectsUnknownAndRepeatedSections) {
   EXPECT_EQ(error, "[vertex shader passthrough] takes no text");
 }
 
-TEST(ShaderTestParseTest, AnEmptyFileHasNoSections) {
+// A file with no section is no shader test, and one with only [require] has nothing to run:
+// both fail (piglit's shader_runner passes them; issue 22).
+TEST(ShaderTestParseTest, AFileWithoutSectionsOrWorkIsRefused) {
   ShaderTest test;
   std::string error;
   int line = 0;
-  ASSERT_TRUE(ParseShaderTest("", "t", &test, &line, &error));
+  EXPECT_FALSE(ParseShaderTest("", "t", &test, &line, &error));
+  EXPECT_EQ(line, 1);
+  EXPECT_THAT(error, ::testing::HasSubstr("not a shader test"));
+  EXPECT_FALSE(
+      ParseShaderTest("\x7f"
+                      "ELF\x02\x01\n binary",
+                      "t", &test, &line, &error));
+  EXPECT_THAT(error, ::testing::HasSubstr("not a shader test"));
+  EXPECT_FALSE(ParseShaderTest("[require]\nGL >= 2.0\n", "t", &test, &line, &error));
+  EXPECT_THAT(error, ::testing::HasSubstr("nothing to run"));
+  // Shaders without [test] commands: piglit's link-only tests, accepted.
+  EXPECT_TRUE(ParseShaderTest("[vertex program]\n!!ARBvp1.0\nEND\n", "t", &test, &line, &error));
   EXPECT_TRUE(test.commands.empty());
-  EXPECT_EQ(test.vertex_program.line, 0);
+  EXPECT_TRUE(ParseShaderTest("[test]\nclear\n", "t", &test, &line, &error));
 }
 
 TEST(ShaderTestJunitTest, CountsAndEscapes) {

@@ -2,6 +2,7 @@
 // texture objects.
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <utility>
 
@@ -17,8 +18,11 @@ bool ParseDim(std::string_view s, TexDim* dim) {
                                                               {"3d", TexDim::Tex3D},
                                                               {"cube", TexDim::Cube},
                                                               {"rect", TexDim::Rect}};
+  // Any case: the ARB spelling (2D, CUBE, RECT) as the lower-case one.
+  std::string lower(s);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const auto& [name, d] : kDims) {
-    if (s == name) {
+    if (lower == name) {
       *dim = d;
       return true;
     }

@@ -1,6 +1,7 @@
 // Splitting a .shader_test file into its sections (docs/design/formats.md, shader_test).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 
@@ -147,6 +148,23 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, 
         break;
       }
     }
+  }
+  // A file with no section is no shader test (piglit's shader_runner reports a pass for it:
+  // arbiter does not); one with neither a program nor a command has nothing to run.
+  if (std::find(seen.begin(), seen.end(), true) == seen.end()) {
+    *error_line = 1;
+    *error =
+        "not a shader test: no section such as [require], [vertex shader], [fragment program] "
+        "or [test] (the format: docs/run.md)";
+    return false;
+  }
+  const bool programs = !test->vertex_shaders.empty() || !test->fragment_shaders.empty() ||
+                        test->vertex_program.line != 0 || test->fragment_program.line != 0 ||
+                        test->vertex_passthrough;
+  if (!programs && test->commands.empty()) {
+    *error_line = 1;
+    *error = "nothing to run: the test has no shader, no program and no [test] command";
+    return false;
   }
   if (test->vertex_passthrough && !test->vertex_shaders.empty()) {
     *error_line = test->passthrough_line;

@@ -63,4 +63,14 @@ enum class ReadOutcome { Read, Directory, Failed };
 [[nodiscard]] bool WriteFileAtomically(const std::string& path, std::string_view bytes,
                                        std::string* error);
 
+// Several files that belong together (a translation's shaders and binding map): each is
+// written to a temporary first, and only when all are on disk are they renamed into place, so
+// a failure leaves none of them written (the renames themselves fail only if a folder goes
+// away meanwhile). On failure returns false and sets `error` to "cannot write 'PATH': reason".
+struct FileToWrite {
+  std::string path;
+  std::string bytes;
+};
+[[nodiscard]] bool WriteFilesAtomically(const std::vector<FileToWrite>& files, std::string* error);
+
 }  // namespace arbiter::compiler

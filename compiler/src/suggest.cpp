@@ -1,10 +1,10 @@
 // "Did you mean" suggestions: the closest candidate by edit distance.
-#include "suggest.h"
+#include "arbiter/compiler/suggest.h"
 
 #include <algorithm>
 #include <cctype>
 
-namespace arbiter::arbvp {
+namespace arbiter::compiler {
 namespace {
 
 size_t Distance(std::string_view a, std::string_view b) {
@@ -63,4 +63,4 @@ std::string JoinAlternatives(const std::vector<std::string_view>& words) {
   return out;
 }
 
-}  // namespace arbiter::arbvp
+}  // namespace arbiter::compiler

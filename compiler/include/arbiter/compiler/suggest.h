@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace arbiter::arbvp {
+namespace arbiter::compiler {
 
 // The candidate closest to `word` (case-insensitive match first, then Levenshtein distance
 // of at most max(1, size/3)); empty when none is close.
@@ -14,4 +14,4 @@ std::string ClosestMatch(std::string_view word, const std::vector<std::string_vi
 // "a, b, c or d"
 std::string JoinAlternatives(const std::vector<std::string_view>& words);
 
-}  // namespace arbiter::arbvp
+}  // namespace arbiter::compiler
