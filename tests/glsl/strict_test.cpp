@@ -247,6 +247,22 @@ TEST(Strict, ConditionalOperandsAreMacrosOrLiterals) {
               ElementsAre("3:5 glsl-if-undefined-identifier", "4:7 glsl-if-undefined-identifier"));
 }
 
+// 3.3: "There are no number sign based operators"; the conditionals "operate as is standard
+// for C++ preprocessors", which do not process a skipped group's #define: its '#' is no
+// operator (piglit's stringification-in-unreachable-branch.frag). Where arbiter cannot tell
+// the group's value, nothing is reported.
+TEST(Strict, StringificationOnlyInCompiledText) {
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#ifdef NOT_DEFINED\n#define S(a) vec4(#a)\n#endif\n" + std::string(kMain)),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#ifndef NOT_DEFINED\n#define S(a) vec4(#a)\n#endif\n" + std::string(kMain)),
+              ElementsAre("2:19 glsl-preprocessor"));
+  EXPECT_THAT(Check(Stage::Vertex, "#ifdef GL_NOT_AN_EXTENSION\n#define S(a) vec4(#a)\n#endif\n" +
+                                       std::string(kMain)),
+              IsEmpty());
+}
+
 // 4.1.9, 4.3.3: an array size is an integral constant expression, read operand by operand:
 // integer literals and const int variables, through operators and constructors, no calls.
 TEST(Strict, ArraySizesAreIntegralConstantExpressions) {
@@ -278,16 +294,19 @@ TEST(Strict, ArraySizesAreIntegralConstantExpressions) {
                     "  gl_FragColor = vec4(0.0);\n}\n"),
               ElementsAre("4:15 glsl-array-size-not-integral"));
   // An object-like macro is expanded and reported at its name; a function-like macro and an
-  // undecidable #if leave the size unjudged; a group known to be false is skipped.
+  // undecidable #if (a function-like macro, a GL_ name) leave the size unjudged; a group known
+  // to be false is skipped; #if expressions are evaluated (__VERSION__ is 110).
   EXPECT_THAT(
       Check(Stage::Fragment,
             "#define TWO 2.0\n#define F(x) x\nfloat a[int(TWO)];\nfloat b[int(F(2.0))];\n"
             "#if __VERSION__ >= 110\nfloat c[int(2.0)];\n#endif\n#if 0\nfloat d[int(2.0)];\n"
             "#else\nfloat d[2];\n#endif\n#ifdef GL_ES\nconst int k = 2;\n#else\nconst float "
             "k = 2.0;\n#endif\nfloat e[int(k)];\n#if !defined(TWO)\nfloat g[int(2.0)];\n"
-            "#elif defined TWO\nfloat g[int(1.0)];\n#endif\n" +
+            "#elif defined TWO\nfloat g[int(1.0)];\n#endif\n#if F(1)\nfloat h[int(2.0)];\n"
+            "#endif\n#if GL_NOT_AN_EXTENSION > 1\nfloat i[int(2.0)];\n#endif\n" +
                 std::string(kFrag)),
-      ElementsAre("3:13 glsl-array-size-not-integral", "22:13 glsl-array-size-not-integral"));
+      ElementsAre("3:13 glsl-array-size-not-integral", "6:13 glsl-array-size-not-integral",
+                  "22:13 glsl-array-size-not-integral"));
 }
 
 // glslang's own diagnostics keep their line and get the column of the token they quote.

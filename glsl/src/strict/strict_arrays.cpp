@@ -29,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../conditionals.h"
 #include "strict.h"
 
 namespace arbiter::glsl {
@@ -36,14 +37,15 @@ namespace {
 
 bool IsDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
+// A token as glslang parses it, as far as this rule can tell (Preprocessed).
 struct Tok {
-  std::string text;
+  std::string_view text;  // views a source, the preamble or a literal
   const compiler::SourceFile* file = nullptr;
-  uint32_t offset = 0;  // in the file: of the token, or of the macro name it came from
-  uint32_t length = 0;  // of the reported range
-  std::string macro;    // the object-like macro it was expanded from, if any
-  bool opaque = false;  // a function-like or implementation macro: value unknown
-  bool unsure = false;  // in a conditional group whose value is not known
+  uint32_t offset = 0;     // in the file: of the token, or of the macro name it came from
+  uint32_t length = 0;     // of the reported range
+  std::string_view macro;  // the object-like macro it was expanded from, if any
+  bool opaque = false;     // a function-like or implementation macro: value unknown
+  bool unsure = false;     // in a conditional group whose value is not known
 };
 
 bool IsIdent(const Tok& t) { return IsIdentStart(t.text[0]); }
@@ -57,194 +59,42 @@ bool IsFloatLiteral(std::string_view text) {
   return text.find_first_of(".eEfF") != std::string_view::npos;
 }
 
-// The tokens of one line of code (comments already blanked): identifiers, numbers and single
-// punctuation characters.
-void Lex(std::string_view line, uint32_t base, const compiler::SourceFile* file,
-         std::vector<Tok>* out) {
-  for (size_t i = 0; i < line.size();) {
-    char c = line[i];
-    if (std::isspace(static_cast<unsigned char>(c))) {
-      ++i;
-      continue;
-    }
-    size_t start = i;
-    if (IsIdentStart(c)) {
-      while (i < line.size() && IsIdentChar(line[i])) ++i;
-    } else if (IsDigit(c) || (c == '.' && i + 1 < line.size() && IsDigit(line[i + 1]))) {
-      // Digits, letters (exponent, suffix, hexadecimal), '.', and the sign of an exponent.
-      while (i < line.size()) {
-        char d = line[i];
-        bool sign = (d == '+' || d == '-') && (line[i - 1] == 'e' || line[i - 1] == 'E') &&
-                    !(line.substr(start, 2) == "0x" || line.substr(start, 2) == "0X");
-        if (!IsIdentChar(d) && d != '.' && !sign) break;
-        ++i;
-      }
-    } else {
-      ++i;
-    }
-    Tok tok;
-    tok.text = std::string(line.substr(start, i - start));
-    tok.file = file;
-    tok.offset = base + static_cast<uint32_t>(start);
-    tok.length = static_cast<uint32_t>(i - start);
-    out->push_back(std::move(tok));
-  }
-}
-
-struct Macro {
-  bool function_like = false;
-  bool unsure = false;  // defined or undefined in a group whose value is not known
-  std::vector<Tok> body;
-};
-
-// The tokens glslang parses, as far as this rule can tell: directives followed, groups whose
-// value is known to be false skipped, object-like macros expanded. The source strings are
-// one shader, read in order (a macro or a group goes on into the next string).
+// The tokens glslang parses, as far as this rule can tell: directives followed
+// (conditionals.h), groups known to be false skipped, object-like macros expanded. The
+// source strings are one shader, read in order (a macro or a group goes on into the next
+// string).
 class Preprocessed {
  public:
-  explicit Preprocessed(const StrictContext& ctx) {
-    for (size_t i = 0; i < ctx.sources.size(); ++i) Read(*ctx.sources[i], BlankedText(ctx, i));
+  explicit Preprocessed(const StrictContext& ctx) : tracker_(ctx.preamble) {
+    for (size_t i = 0; i < ctx.sources.size(); ++i) Read(ctx, i);
   }
 
   const std::vector<Tok>& tokens() const { return tokens_; }
 
  private:
-  void Read(const compiler::SourceFile& file, const std::string& text) {
-    for (uint32_t n = 1; n <= file.line_count(); ++n) {
-      uint32_t start = file.LineStart(n);
-      std::string_view line = std::string_view(text).substr(start, file.LineText(n).size());
-      size_t first = line.find_first_not_of(" \t\r\f\v");
-      if (first == std::string_view::npos) continue;
-      if (line[first] == '#') {
-        Directive(line.substr(first + 1), start + static_cast<uint32_t>(first + 1), &file);
-        continue;
-      }
-      if (Skipped()) continue;
-      std::vector<Tok> raw;
-      Lex(line, start, &file, &raw);
-      bool unsure = Unsure();
-      for (Tok& t : raw) {
-        t.unsure = unsure;
-        Expand(t, 0);
-      }
+  // The code tokens of one source and its directives, in text order.
+  void Read(const StrictContext& ctx, size_t index) {
+    const std::vector<Token>& code = SourceTokens(ctx, index);
+    auto next = code.begin();
+    auto code_before = [&](uint32_t end) {
+      for (; next != code.end() && next->offset < end; ++next) Code(*next, ctx.sources[index]);
+    };
+    for (const Directive& d : Directives(BlankedText(ctx, index))) {
+      code_before(d.hash);
+      tracker_.Follow(d);
     }
+    code_before(UINT32_MAX);
   }
 
-  enum class State { kActive, kInactive, kUnsure };
-  struct Group {
-    bool parent_skipped;
-    State state;
-    bool taken;  // a branch was taken
-    bool maybe;  // a branch may have been taken (a value not known)
-  };
-  enum class Value { kFalse, kTrue, kUnknown };
-
-  bool Skipped() const {
-    for (const Group& g : groups_) {
-      if (g.state == State::kInactive) return true;
-    }
-    return false;
-  }
-  bool Unsure() const {
-    for (const Group& g : groups_) {
-      if (g.state == State::kUnsure) return true;
-    }
-    return false;
-  }
-
-  Value Defined(const std::string& name) const {
-    auto it = macros_.find(name);
-    if (it != macros_.end()) return it->second.unsure ? Value::kUnknown : Value::kTrue;
-    if (name == "__LINE__" || name == "__FILE__" || name == "__VERSION__") return Value::kTrue;
-    if (name.compare(0, 3, "GL_") == 0) return Value::kUnknown;  // the implementation's
-    return Value::kFalse;
-  }
-
-  // #if and #elif: an integer literal, or `defined X` or `defined ( X )`, each perhaps negated
-  // with '!'; any other expression has a value this rule does not know.
-  Value Evaluate(const std::vector<Tok>& operands) const {
-    size_t k = 0;
-    bool negate = false;
-    for (; k < operands.size() && operands[k].text == "!"; ++k) negate = !negate;
-    std::vector<std::string> rest;
-    for (; k < operands.size(); ++k) rest.push_back(operands[k].text);
-    Value v = Value::kUnknown;
-    if (rest.size() == 1 && IsDigit(rest[0][0]) && !IsFloatLiteral(rest[0])) {
-      try {
-        size_t used = 0;
-        long long n = std::stoll(rest[0], &used, 0);  // decimal, octal, hexadecimal
-        if (used == rest[0].size()) v = n != 0 ? Value::kTrue : Value::kFalse;
-      } catch (...) {
-        v = Value::kUnknown;
-      }
-    } else if (rest.size() == 2 && rest[0] == "defined" && IsIdentStart(rest[1][0])) {
-      v = Defined(rest[1]);
-    } else if (rest.size() == 4 && rest[0] == "defined" && rest[1] == "(" &&
-               IsIdentStart(rest[2][0]) && rest[3] == ")") {
-      v = Defined(rest[2]);
-    }
-    if (negate && v != Value::kUnknown) v = v == Value::kTrue ? Value::kFalse : Value::kTrue;
-    return v;
-  }
-
-  static State StateOf(Value v) {
-    return v == Value::kTrue    ? State::kActive
-           : v == Value::kFalse ? State::kInactive
-                                : State::kUnsure;
-  }
-
-  void Directive(std::string_view rest, uint32_t base, const compiler::SourceFile* file) {
-    std::vector<Tok> words;
-    Lex(rest, base, file, &words);
-    if (words.empty()) return;
-    std::string directive = words[0].text;
-    std::vector<Tok> operands(words.begin() + 1, words.end());
-    bool skipped = Skipped();
-    if (directive == "ifdef" || directive == "ifndef") {
-      Value v = Value::kUnknown;
-      if (!operands.empty()) v = Defined(operands[0].text);
-      if (directive == "ifndef" && v != Value::kUnknown) {
-        v = v == Value::kTrue ? Value::kFalse : Value::kTrue;
-      }
-      Push(skipped, v);
-    } else if (directive == "if") {
-      Push(skipped, Evaluate(operands));
-    } else if ((directive == "elif" || directive == "else") && !groups_.empty()) {
-      Group& g = groups_.back();
-      if (g.parent_skipped || g.taken) {
-        g.state = State::kInactive;
-        return;
-      }
-      Value v = directive == "else" ? Value::kTrue : Evaluate(operands);
-      if (g.maybe && v != Value::kFalse) v = Value::kUnknown;
-      g.state = StateOf(v);
-      g.taken = v == Value::kTrue;
-      g.maybe = g.maybe || v == Value::kUnknown;
-    } else if (directive == "endif" && !groups_.empty()) {
-      groups_.pop_back();
-    } else if (directive == "define" && !skipped && !operands.empty() && IsIdent(operands[0])) {
-      const Tok& name = operands[0];
-      Macro macro;
-      macro.unsure = Unsure();
-      size_t name_end = name.offset - base + name.text.size();
-      macro.function_like = name_end < rest.size() && rest[name_end] == '(';
-      macro.body.assign(operands.begin() + 1, operands.end());
-      macros_[name.text] = std::move(macro);
-    } else if (directive == "undef" && !skipped && !operands.empty()) {
-      if (Unsure()) {
-        macros_[operands[0].text] = Macro{true, true, {}};
-      } else {
-        macros_.erase(operands[0].text);
-      }
-    }
-  }
-
-  void Push(bool skipped, Value v) {
-    if (skipped) {
-      groups_.push_back({true, State::kInactive, true, false});
-    } else {
-      groups_.push_back({false, StateOf(v), v == Value::kTrue, v == Value::kUnknown});
-    }
+  void Code(const Token& t, const compiler::SourceFile* file) {
+    if (tracker_.reach() == Reach::Skipped) return;
+    Tok tok;
+    tok.text = t.text;
+    tok.file = file;
+    tok.offset = t.offset;
+    tok.length = static_cast<uint32_t>(t.text.size());
+    tok.unsure = tracker_.reach() == Reach::Unknown;
+    Expand(tok, 0);
   }
 
   // Appends `t`, or the expansion of the macro it names (at the macro name's location).
@@ -253,41 +103,37 @@ class Preprocessed {
       tokens_.push_back(t);
       return;
     }
-    auto it = macros_.find(t.text);
-    bool implementation = it == macros_.end() && t.text.compare(0, 3, "GL_") == 0;
+    const MacroTable& macros = tracker_.macros();
+    auto it = macros.find(t.text);
+    // A GL_ name the implementation may define. (A name an #include may define is read as
+    // it stands: if it is no macro, it is no const int declared here either.)
+    bool implementation = it == macros.end() && t.text.substr(0, 3) == "GL_";
     if (implementation ||
-        (it != macros_.end() && (it->second.function_like || it->second.unsure || depth > 32))) {
+        (it != macros.end() && (it->second.function_like || it->second.unsure || depth > 32))) {
       Tok opaque = t;
       opaque.opaque = true;
       tokens_.push_back(opaque);
       return;
     }
-    if (it == macros_.end() || expanding_.count(t.text)) {
+    if (it == macros.end() || expanding_.count(t.text)) {
       Tok plain = t;
-      if (t.text == "__LINE__" || t.text == "__FILE__" || t.text == "__VERSION__") {
-        // An integer, as every predefined macro is. (assign(1, c): GCC 12 -O2 warns about
-        // assigning a literal here, a false -Wrestrict.)
-        plain.text.assign(1, '1');
-      }
+      // An integer, as every predefined macro is.
+      if (t.text == "__LINE__" || t.text == "__FILE__" || t.text == "__VERSION__") plain.text = "1";
       tokens_.push_back(plain);
       return;
     }
-    expanding_.insert(t.text);
-    for (const Tok& b : it->second.body) {
-      Tok e = b;
-      e.file = t.file;
-      e.offset = t.offset;
-      e.length = t.length;
-      e.unsure = t.unsure;
-      if (e.macro.empty()) e.macro = t.macro.empty() ? t.text : t.macro;
+    expanding_.emplace(t.text);
+    for (const Token& b : it->second.body) {
+      Tok e = t;
+      e.text = b.text;
+      if (e.macro.empty()) e.macro = t.text;  // the outermost macro: views the source
       Expand(e, depth + 1);
     }
-    expanding_.erase(t.text);
+    expanding_.erase(std::string(t.text));
   }
 
-  std::map<std::string, Macro, std::less<>> macros_;
+  GroupTracker tracker_;
   std::set<std::string, std::less<>> expanding_;
-  std::vector<Group> groups_;
   std::vector<Tok> tokens_;
 };
 
@@ -330,7 +176,7 @@ class ArraySizes {
     scopes_.emplace_back();
     size_t i = 0;
     while (i < toks_.size()) {
-      const std::string& t = toks_[i].text;
+      std::string_view t = toks_[i].text;
       if (t == "{") {
         scopes_.push_back(std::move(pending_));
         pending_.clear();
@@ -374,7 +220,7 @@ class ArraySizes {
     size_t k = i;
     while (k > 0 && IsQualifier(toks_[k - 1].text)) --k;
     if (k == 0) return true;
-    const std::string& prev = toks_[k - 1].text;
+    std::string_view prev = toks_[k - 1].text;
     return prev == ";" || prev == "{" || prev == "}" || prev == "(";
   }
 
@@ -393,7 +239,7 @@ class ArraySizes {
     brace.is_const = HasConst(i);
     brace.unsure = toks_[i].unsure;
     if (k < toks_.size() && IsIdent(toks_[k])) {
-      brace.type = toks_[k].text;
+      brace.type = std::string(toks_[k].text);
       structs_.insert(brace.type);
       ++k;
     }
@@ -403,7 +249,7 @@ class ArraySizes {
 
   // A declaration beginning with the type at `i`: variables, or a function and its parameters.
   size_t Declaration(size_t i) {
-    const std::string& type = toks_[i].text;
+    const std::string type(toks_[i].text);
     if (i + 2 < toks_.size() && toks_[i + 2].text == "(") return Function(i + 2);
     return Declarators(i + 1, type, HasConst(i), toks_[i].unsure);
   }
@@ -456,10 +302,10 @@ class ArraySizes {
         if (close > i + 1) CheckSize(i + 1, close);
         i = close + 1;
       }
-      scopes_.back()[name.text] = Symbol{type, is_const, false, unsure || name.unsure};
+      scopes_.back()[std::string(name.text)] = Symbol{type, is_const, false, unsure || name.unsure};
       if (i < toks_.size() && toks_[i].text == "=") {
         for (++i; i < toks_.size(); ++i) {
-          const std::string& t = toks_[i].text;
+          std::string_view t = toks_[i].text;
           if (t == "," || t == ";" || t == "}") break;
           if (t == "(" || t == "[" || t == "{") {
             size_t end = Match(i);
@@ -483,7 +329,7 @@ class ArraySizes {
   size_t Match(size_t open) const {
     int depth = 0;
     for (size_t k = open; k < toks_.size(); ++k) {
-      const std::string& t = toks_[k].text;
+      std::string_view t = toks_[k].text;
       if (t == "(" || t == "[" || t == "{") ++depth;
       if (t == ")" || t == "]" || t == "}") {
         if (--depth == 0) return k;
@@ -492,7 +338,7 @@ class ArraySizes {
     return kNone;
   }
 
-  const Symbol* Lookup(const std::string& name) const {
+  const Symbol* Lookup(std::string_view name) const {
     for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) {
       auto it = scope->find(name);
       if (it != scope->end()) return &it->second;

@@ -4,9 +4,18 @@
 // - identifiers and macro names containing "__" are reserved (glslang only warns);
 // - "#line must have, after macro substitution, [the form] #line line [source-string-number]
 //   where line and source-string-number are constant integer expressions" (glslang takes an
-//   undefined identifier as 0, silently).
+//   undefined identifier as 0, silently);
+// - "There are no number sign based operators (no #, #@, ##, etc.)".
 // Read from the directive lines of the source, as a preprocessor does: these rules are about
 // the text before macro expansion, which the AST no longer has.
+//
+// Only the text a preprocessor processes is judged (conditionals.h). 3.3's conditionals
+// "operate as is standard for C++ preprocessors", and C++ (16.1 [cpp.cond]) processes a
+// skipped group's directives only through their name, to count nesting: a #define there
+// defines nothing, so its name and '#' are not checked, nor its #line, #extension or
+// #pragma; its code is no identifiers. In a group whose condition arbiter cannot evaluate,
+// nothing is reported either, rather than a false error. None of these rules is about the
+// characters themselves (3.1's character set is charset.cpp's, on all the text).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../conditionals.h"
 #include "strict.h"
 
 namespace arbiter::glsl {
@@ -33,26 +43,37 @@ std::vector<Token> Operands(const Directive& d) {
   return out;
 }
 
-// The rules of one source, in text order: its directives and the tokens of its code.
+// The rules of the whole shader, in text order: its directives and the tokens of its code.
 class Preprocessor {
  public:
-  Preprocessor(const StrictContext& ctx, const compiler::SourceFile* file,
-               std::set<std::string, std::less<>>* reserved_reported)
-      : ctx_(ctx), file_(file), reserved_reported_(reserved_reported) {}
+  explicit Preprocessor(const StrictContext& ctx) : ctx_(ctx), tracker_(ctx.preamble) {}
 
+  // One source string, after those before it.
+  void Read(size_t index) {
+    file_ = ctx_.sources[index];
+    code_seen_ = false;
+    brace_depth_ = 0;
+    const std::vector<Token>& code = SourceTokens(ctx_, index);
+    auto next = code.begin();
+    for (const Directive& d : Directives(BlankedText(ctx_, index))) {
+      for (; next != code.end() && next->offset < d.hash; ++next) Code(*next);
+      Follow(d);
+    }
+    for (; next != code.end(); ++next) Code(*next);
+  }
+
+ private:
   void Follow(const Directive& d) {
+    if (tracker_.Follow(d).reach != Reach::Active) return;
     const std::vector<Token> words = Operands(d);
     const bool names_macro = (d.name == "define" || d.name == "undef") && !words.empty();
     if (names_macro) CheckMacroName(d.name, words[0]);
-    if (d.name == "define") CheckStringification(d);
-    if (d.name == "define" && !words.empty()) {
-      macros_.emplace(words[0].text);
-    } else if (d.name == "undef" && !words.empty()) {
-      macros_.erase(std::string(words[0].text));
-    } else if (d.name == "extension" && !d.before_code) {
+    if (d.name == "define") {
+      CheckStringification(d);
+    } else if (d.name == "extension" && code_seen_) {
       Report(Diag::Preprocessor, d.name_offset, d.name.size(),
              "#extension must come before any non-preprocessor token of the shader");
-    } else if (d.name == "pragma" && d.brace_depth > 0 && !words.empty() &&
+    } else if (d.name == "pragma" && brace_depth_ > 0 && !words.empty() &&
                (words[0].text == "optimize" || words[0].text == "debug")) {
       Report(
           Diag::Preprocessor, d.name_offset, d.name.size(),
@@ -62,11 +83,22 @@ class Preprocessor {
     }
   }
 
+  // A token of code. Braces count where the text may be compiled (a function's body);
+  // tokens before an #extension only where it surely is.
+  void Code(const Token& t) {
+    const Reach reach = tracker_.reach();
+    if (reach != Reach::Skipped && t.text == "{") ++brace_depth_;
+    if (reach != Reach::Skipped && t.text == "}" && brace_depth_ > 0) --brace_depth_;
+    if (reach != Reach::Active) return;
+    code_seen_ = true;
+    CheckReservedIdentifier(t);
+  }
+
   // 3.6: "all identifiers containing two consecutive underscores (__) are reserved as
   // possible future keywords" (the predefined macros excepted).
-  void CheckCode(const Token& t) {
+  void CheckReservedIdentifier(const Token& t) {
     if (t.kind == Token::Identifier && t.text.find("__") != std::string_view::npos &&
-        !macros_.count(t.text) && reserved_reported_->emplace(t.text).second) {
+        !IsMacro(t.text) && reserved_reported_.emplace(t.text).second) {
       Report(Diag::ReservedIdentifier, t.offset, t.text.size(),
              fmt::format("identifiers containing '__' are reserved as possible future "
                          "keywords ({} section 3.6): '{}'; every driver accepts it",
@@ -74,7 +106,11 @@ class Preprocessor {
     }
   }
 
- private:
+  // A macro here, or perhaps one (a name the implementation or an included file may define).
+  bool IsMacro(std::string_view name) const {
+    return Predefined(name) || tracker_.macros().count(name) > 0 || tracker_.MaybeMacro(name);
+  }
+
   void Report(Diag diag, size_t offset, size_t length, std::string message) {
     ctx_.sink->Report(Info(diag), file_,
                       {static_cast<uint32_t>(offset), static_cast<uint32_t>(offset + length)},
@@ -118,7 +154,7 @@ class Preprocessor {
   // #line's operands are constant integer expressions: an identifier must be a macro.
   void CheckLine(const std::vector<Token>& words) {
     for (const Token& w : words) {
-      if (w.kind == Token::Identifier && !macros_.count(w.text)) {
+      if (w.kind == Token::Identifier && !IsMacro(w.text)) {
         Report(Diag::Preprocessor, w.offset, w.text.size(),
                fmt::format("#line takes constant integer expressions; '{}' is not a "
                            "defined macro",
@@ -129,27 +165,18 @@ class Preprocessor {
   }
 
   const StrictContext& ctx_;
-  const compiler::SourceFile* file_;
-  std::set<std::string, std::less<>>* reserved_reported_;  // once per name: at its first use
-  std::set<std::string, std::less<>> macros_ = {"__LINE__", "__FILE__", "__VERSION__"};
+  GroupTracker tracker_;
+  const compiler::SourceFile* file_ = nullptr;            // the source being read
+  bool code_seen_ = false;                                // in this source, where it is Active
+  int brace_depth_ = 0;                                   // in this source, where it is not Skipped
+  std::set<std::string, std::less<>> reserved_reported_;  // once per name: at its first use
 };
 
 }  // namespace
 
 void CheckPreprocessor(const StrictContext& ctx) {
-  std::set<std::string, std::less<>> reserved_reported;
-  for (size_t index = 0; index < ctx.sources.size(); ++index) {
-    const std::string& text = BlankedText(ctx, index);
-    Preprocessor preprocessor(ctx, ctx.sources[index], &reserved_reported);
-    // The macros defined so far decide what a code token is: walk both in text order.
-    const std::vector<Token> code = Tokenize(text);
-    auto next = code.begin();
-    for (const Directive& d : Directives(text)) {
-      for (; next != code.end() && next->offset < d.hash; ++next) preprocessor.CheckCode(*next);
-      preprocessor.Follow(d);
-    }
-    for (; next != code.end(); ++next) preprocessor.CheckCode(*next);
-  }
+  Preprocessor preprocessor(ctx);
+  for (size_t index = 0; index < ctx.sources.size(); ++index) preprocessor.Read(index);
 }
 
 }  // namespace arbiter::glsl
