@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "conditionals.h"
 #include "diag.h"
 #include "prepare.h"
 #include "scan.h"
@@ -170,6 +171,52 @@ bool FindAnywhere(const std::vector<const SourceFile*>& sources, std::string_vie
       }
     }
   }
+  return false;
+}
+
+// The backslash that ends `line` of `file`, where glslang reports a line continuation; the
+// start of the line when there is none.
+compiler::Range BackslashAtEnd(const SourceFile& file, uint32_t line) {
+  if (line < 1 || line > file.line_count()) return {0, 0};
+  const uint32_t start = file.LineStart(line);
+  std::string_view text = file.LineText(line);
+  while (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+  if (text.empty() || text.back() != '\\') return {start, start};
+  const auto at = static_cast<uint32_t>(start + text.size() - 1);
+  return {at, at + 1};
+}
+
+// Whether `offset` of `file` is in a conditional group known to be skipped (conditionals.h).
+bool InSkippedGroup(const InfoLogContext& ctx, const SourceFile* file, uint32_t offset) {
+  auto it = std::find(ctx.sources.begin(), ctx.sources.end(), file);
+  if (it == ctx.sources.end()) return false;  // the preamble or an included file
+  std::vector<std::string_view> texts;
+  for (const SourceFile* source : ctx.sources) texts.push_back(source->text());
+  const ShaderReach reach(ctx.prepared != nullptr ? ctx.prepared->preamble : "", texts);
+  return reach.At(static_cast<size_t>(it - ctx.sources.begin()), offset) == Reach::Skipped;
+}
+
+// glslang 12 rejects a line continuation (backslash-newline) before GLSL 4.20, and arbiter
+// keeps that error, at the backslash: 1.10 and 1.20 have none (docs/glsl-disagreements.md
+// A11: 3.1's character set has no backslash). Inside a group known to be skipped it is a
+// warning of its own code: 3.3's conditionals "operate as is standard for C++
+// preprocessors", which do not process a skipped group's text, and every driver accepts it
+// there (piglit's if-statement-in-macro-in-false-ifdef.vert). In a group whose condition
+// arbiter cannot evaluate, the error stands. Returns false for the warning: glslang joined
+// the lines and went on, so its result stands.
+bool EmitLineContinuation(const InfoLogContext& ctx, const SourceFile* file, uint32_t line,
+                          const std::string& message, compiler::DiagnosticSink* sink) {
+  const compiler::Range range = BackslashAtEnd(*file, line);
+  if (!InSkippedGroup(ctx, file, range.begin)) {
+    sink->Report(Info(Diag::Version), file, range, message + " ('line continuation')");
+    return true;
+  }
+  sink->Report(Info(Diag::SkippedLineContinuation), file, range,
+               fmt::format("line continuation (a backslash at the end of a line) in a "
+                           "conditional group the preprocessor skips: {} has none (section "
+                           "3.1 has no backslash), but a skipped group is not compiled, and "
+                           "every driver accepts it",
+                           ctx.version == 120 ? "GLSL 1.20" : "GLSL 1.10"));
   return false;
 }
 
@@ -342,6 +389,9 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
       token = std::string(body.substr(1, close - 1));
       text = std::string(Trim(body.substr(close + 3)));
     }
+  }
+  if (!link && !m.warning && token == "line continuation" && line > 0) {
+    return EmitLineContinuation(ctx, file, line, CleanText(text), sink);
   }
   Diag diag = relaxed != nullptr ? relaxed->warning : Classify(body, link, m.warning);
   // glslang's warning about "__" names is reported as an error by the strictness layer.
