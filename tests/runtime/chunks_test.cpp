@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -76,6 +77,36 @@ TEST(RunChunked, BlamesOnlyTheItemWhoseWorkerDies) {
   ASSERT_EQ(r.failed.count(4), 1u);
   EXPECT_FALSE(r.failed[4].environment);
   EXPECT_NE(r.failed[4].error.find("without an answer"), std::string::npos) << r.failed[4].error;
+}
+
+// Item 9 is a chunk of its own: when its worker dies it is not run again (a hanging test
+// would cost twice its time limit). Jobs run in child processes: they count their runs in a
+// file.
+TEST(RunChunked, DoesNotRerunAChunkOfOneItem) {
+  Recorder r;
+  const std::string log = ::testing::TempDir() + "chunks_test_runs_of_item_9";
+  std::remove(log.c_str());
+  RunChunked(MakeBatch(&r, [log](size_t first, size_t count, std::string* payload, std::string*) {
+    if (first == 9) {
+      if (FILE* f = std::fopen(log.c_str(), "a")) {
+        std::fputs("run\n", f);
+        std::fclose(f);
+      }
+      std::_Exit(3);
+    }
+    *payload = Indices(first, count);
+    return true;
+  }));
+  EXPECT_EQ(r.failed.count(9), 1u);
+  EXPECT_EQ(r.failed.size(), 1u);
+  std::string runs;
+  if (FILE* f = std::fopen(log.c_str(), "r")) {
+    char buffer[64];
+    while (std::fgets(buffer, sizeof buffer, f) != nullptr) runs += buffer;
+    std::fclose(f);
+  }
+  EXPECT_EQ(runs, "run\n");
+  std::remove(log.c_str());
 }
 
 TEST(RunChunked, RerunsAChunkWhoseAnswerHasTheWrongShape) {

@@ -69,8 +69,15 @@ std::vector<Chunk> RunChunks(const ChunkedBatch& batch, const std::vector<Chunk>
 void RunChunked(const ChunkedBatch& batch) {
   std::vector<std::string> errors;
   const std::vector<Chunk> failed = RunChunks(batch, PlanChunks(batch), &errors);
+  // A chunk of one item already ran alone: its failure is final (running it again would
+  // make a hanging test cost twice its time limit). The others run again item by item.
   std::vector<Chunk> singles;
-  for (const Chunk& c : failed) {
+  for (size_t f = 0; f < failed.size(); ++f) {
+    const Chunk& c = failed[f];
+    if (c.count == 1) {
+      batch.failed(c.first, errors[f], /*environment=*/false);
+      continue;
+    }
     for (size_t i = c.first; i < c.first + c.count; ++i) singles.push_back({i, 1});
   }
   if (singles.empty()) return;

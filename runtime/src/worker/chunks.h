@@ -31,8 +31,9 @@ struct ChunkedBatch {
   std::function<void(size_t index, const std::string& error, bool environment)> failed;
 };
 
-// Runs the batch. A chunk whose worker gives no readable answer is run again one item per
-// worker, so that only the guilty item gets the error.
+// Runs the batch. A chunk of several items whose worker gives no readable answer is run
+// again one item per worker, so that only the guilty item gets the error; a chunk of one item
+// is not run again.
 void RunChunked(const ChunkedBatch& batch);
 
 }  // namespace arbiter::runtime
