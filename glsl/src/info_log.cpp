@@ -17,6 +17,7 @@
 #include "prepare.h"
 #include "scan.h"
 #include "source_text.h"
+#include "syntax_error.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -448,10 +449,15 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   }
 
   compiler::Range range{0, 0};
+  std::optional<SyntaxErrorPlace> syntax;
   if (diag == Diag::NestingTooDeep) {
     range = DeepestNesting(*file);
   } else if (line > 0 && token == "floating-point suffix") {
     range = FindFloatSuffix(*file, line);
+  } else if (line > 0 && diag == Diag::SyntaxError && token.empty()) {
+    // glslang quotes no token for a syntax error: find the one its message names.
+    syntax = LocateSyntaxError(*file, static_cast<uint32_t>(line), message);
+    range = syntax ? syntax->token : FindOnLine(*file, line, token);
   } else if (line > 0) {
     range = FindOnLine(*file, line, token);
   } else if (link) {
@@ -471,7 +477,11 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   compiler::Severity severity = (m.warning && diag != Diag::ReservedWord) || relaxed != nullptr
                                     ? compiler::Severity::Warning
                                     : compiler::Severity::Error;
-  sink->Report(Info(diag), severity, file, range, message);
+  compiler::Diagnostic* reported = sink->Report(Info(diag), severity, file, range, message);
+  if (reported != nullptr && syntax && syntax->missing_semicolon) {
+    reported->notes.push_back(
+        {file, *syntax->missing_semicolon, "the statement before it may be missing its ';'"});
+  }
   return relaxed == nullptr;
 }
 
