@@ -155,7 +155,8 @@ void PrintText(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
 
 void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Difference>& diffs,
                const std::vector<std::string>& files,
-               const std::vector<compiler::FileReport>& reports) {
+               const std::vector<compiler::FileReport>& reports,
+               const std::vector<std::string>& warnings = {}) {
   nlohmann::ordered_json j;
   j["files"] = files;
   nlohmann::ordered_json engines = nlohmann::ordered_json::object();
@@ -178,6 +179,7 @@ void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
   }
   // A path that is not UTF-8 becomes U+FFFD instead of throwing.
   j["diagnostics"] = DiagnosticsJson(reports);
+  j["warnings"] = warnings;
   fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
@@ -224,6 +226,15 @@ int RunExec(const ExecCommandOptions& options) {
   }
   arbvp::ExecInputs inputs;
   if (!BuildInputs(options, &inputs)) return static_cast<int>(Exit::Usage);
+  std::vector<const arbvp::Program*> run_programs;
+  for (const LoadedArb* p : {vertex, fragment}) {
+    if (p != nullptr) run_programs.push_back(p->checked.program.get());
+  }
+  const std::vector<std::string> warnings =
+      arbvp::UnusedInputWarnings(run_programs, options.set, inputs);
+  if (!json) {
+    for (const std::string& w : warnings) fmt::print(stderr, "arbiter: warning: {}\n", w);
+  }
 
   std::vector<EngineRun> runs;
   if (options.engine == "ref" || options.engine == "all") {
@@ -263,7 +274,7 @@ int RunExec(const ExecCommandOptions& options) {
   std::vector<std::string> files;
   for (const LoadedArb& p : loaded) files.push_back(p.source->path());
   if (options.common.format == "json") {
-    PrintJson(runs, diffs, files, reports);
+    PrintJson(runs, diffs, files, reports, warnings);
   } else {
     PrintText(runs, diffs);
   }

@@ -6,7 +6,8 @@ writes every accepted program of a directory and reports the rejected ones (3), 
 several shaders on stdout (9); JSON documents carry the diagnostics (4); a GLSL file given to
 an ARB command is told so (5); verify counts a rejected file (8); usage, help, version and
 unknown commands (11); info lists an inline binding once (13); diagnostics come in line order
-(14); run fails what is no shader test or a test with nothing to do (1).
+(14); run fails what is no shader test or a test with nothing to do (1); exec warns about
+inputs that do nothing and takes the ARB texture target spelling (12).
 Usage: new_user.py ARBITER. Exit 0 when every case holds, 1 otherwise."""
 import json
 import os
@@ -132,6 +133,23 @@ with tempfile.TemporaryDirectory() as tmp:
     p = run(["exec", "--help"], tmp)
     expect("repeated options show one value", "--set NAME=V1" in p.stdout and
            "--set TEXT ..." not in p.stdout, p.stdout)
+
+    # 12: exec warns about inputs that do nothing, and takes the ARB target spelling.
+    put("tex.fp", "!!ARBfp1.0\nTEX result.color, fragment.texcoord[0], texture[0], 2D;\nEND\n")
+    p = run(["exec", "tex.fp", "--set", "fragment.texcoord[1]=1", "--set", "program.local[0]=1",
+             "--texture", "1=2D:checker"], tmp)
+    for want in ("no program of this run reads fragment.texcoord[1]",
+                 "no program of this run reads program.local[0]",
+                 "texture unit 1: no instruction samples it",
+                 "texture unit 0 is sampled (2D) but given no texture"):
+        expect(f"exec warns: {want}", want in p.stderr, p.stderr)
+    p = run(["exec", "tex.fp", "--texture", "0=CUBE:checker"], tmp)
+    expect("exec warns about a texture of another target",
+           "a CUBE texture, but the program samples it as 2D" in p.stderr, p.stderr)
+    p = run(["exec", "tex.fp", "--set", "fragment.texcoord=.5,.5", "--texture",
+             "0=2D:checker:4x4"], tmp)
+    expect("exec --texture 0=2D:... (the ARB spelling), used inputs: no warning",
+           p.returncode == 0 and p.stderr == "", p.stderr)
 
     # 13: an inline binding used twice is listed once.
     p = run(["info", "inline.vp"], tmp)

@@ -50,6 +50,16 @@ namespace arbiter::arbvp {
 [[nodiscard]] bool MakePatternTexture(std::string_view pattern, TexDim dim, int width, int height,
                                       int depth, Texture* texture);
 
+// What a run is given that its programs never read, one warning each (for `arbiter exec`):
+// an assignment of `assignments` ("name=values", as --set takes them) to an attribute or a
+// program.env/local entry no program of the run reads (in a pair, fragment.* inputs come from
+// the vertex program), a texture on a unit no instruction samples or of another target than
+// the one sampled, and a sampled unit without a texture. State (state.*) is not judged: a
+// program reads it through derived state too (state.lightprod).
+std::vector<std::string> UnusedInputWarnings(const std::vector<const Program*>& programs,
+                                             const std::vector<std::string>& assignments,
+                                             const ExecInputs& inputs);
+
 // The JSON vectors file:
 //   { "set":      { "program.local[0]": [1,2,3,4], "state.fog.color": [1,0,0,1], ... },
 //     "textures": { "0": { "target": "2d", "pattern": "checker", "size": [4,4],
