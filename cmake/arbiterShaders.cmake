@@ -16,9 +16,9 @@
 #     binding map <dir>/<name>.<vert|frag>.bindings.json (<name>: the file name without its
 #     extension). arbiter writes both atomically and only when the program is accepted.
 # Every step depends on its shader and on the arbiter executable (a new arbiter re-checks
-# everything); LIMITS (spec-min, mesa, or a JSON file, which the steps then depend on too)
-# passes --limits, WERROR passes --Werror. Relative paths are relative to
-# CMAKE_CURRENT_SOURCE_DIR.
+# everything); LIMITS (a built-in profile: spec-min, mesa, r300, r500, i915, nv30 or nv40; or
+# a JSON file, which the steps then depend on too) passes --limits, WERROR passes --Werror.
+# Relative paths are relative to CMAKE_CURRENT_SOURCE_DIR.
 #
 # The output name of a translation depends on the program's stage, which is read from its
 # header when CMake configures. Each translated ARB program is therefore a configure
@@ -38,7 +38,7 @@ function(_arbiter_common_flags limits werror flags_var depends_var)
   set(flags "")
   set(depends "")
   if(limits)
-    if(NOT limits MATCHES "^(spec-min|mesa)$")
+    if(NOT limits MATCHES "^(spec-min|mesa|r300|r500|i915|nv30|nv40)$")
       cmake_path(ABSOLUTE_PATH limits BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
       set(depends "${limits}")
     endif()

@@ -84,7 +84,7 @@ _arbiter() {
     --engine) COMPREPLY=($(compgen -W "ref mesa all" -- "$cur")); return 0 ;;
     --engines) COMPREPLY=($(compgen -W "ref mesa-arb mesa-glsl" -- "$cur")); return 0 ;;
     --limits)
-      COMPREPLY=($(compgen -W "spec-min mesa" -- "$cur"))
+      COMPREPLY=($(compgen -W "spec-min mesa r300 r500 i915 nv30 nv40" -- "$cur"))
       _arbiter_files json
       return 0 ;;
     --vert) _arbiter_files 'vert|vs'; return 0 ;;

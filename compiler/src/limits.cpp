@@ -2,6 +2,7 @@
 #include "arbiter/compiler/limits.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cstddef>
 #include <limits>
@@ -18,14 +19,18 @@ namespace arbiter::compiler {
 namespace {
 
 constexpr std::string_view kSpecMin = "spec-min";
-constexpr std::string_view kMesa = "mesa";
 
-LimitProfile MakeProfile(std::string_view name, bool mesa) {
+// The built-in profiles, in the order of limits.def's value columns.
+constexpr std::array<std::string_view, 7> kBuiltinNames = {kSpecMin, "mesa", "r300", "r500",
+                                                           "i915",   "nv30", "nv40"};
+
+LimitProfile MakeProfile(size_t column) {
   LimitProfile profile;
-  profile.name = std::string(name);
-  profile.base = std::string(name);
-#define ARBITER_LIMIT(key, gl, specmin, mesa_value, desc) \
-  profile.values.emplace(key, mesa ? (mesa_value) : (specmin));
+  profile.name = std::string(kBuiltinNames[column]);
+  profile.base = profile.name;
+#define ARBITER_LIMIT(key, gl, specmin, mesa, r300, r500, i915, nv30, nv40, desc) \
+  profile.values.emplace(                                                         \
+      key, std::array<int64_t, 7>{specmin, mesa, r300, r500, i915, nv30, nv40}[column]);
 #include "limits.def"
 #undef ARBITER_LIMIT
   return profile;
@@ -63,7 +68,17 @@ std::string SuggestKey(std::string_view unknown) {
   return best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best);
 }
 
-std::string BuiltinNamesText() { return fmt::format("'{}' or '{}'", kSpecMin, kMesa); }
+// "'spec-min', 'mesa', ... or 'nv40'".
+std::string BuiltinNamesText() {
+  std::string text;
+  for (size_t i = 0; i < kBuiltinNames.size(); ++i) {
+    if (i > 0) {
+      text += i + 1 < kBuiltinNames.size() ? ", " : " or ";
+    }
+    text += fmt::format("'{}'", kBuiltinNames[i]);
+  }
+  return text;
+}
 
 // Strips nlohmann's "[json.exception.parse_error.101] " prefix from an exception text.
 std::string JsonErrorText(const char* what) {
@@ -160,7 +175,8 @@ std::optional<LimitProfile> ProfileFromJson(const std::string& path, const nlohm
 
 const std::vector<LimitKey>& LimitKeys() {
   static const std::vector<LimitKey> keys = {
-#define ARBITER_LIMIT(key, gl, specmin, mesa, desc) LimitKey{key, gl, desc},
+#define ARBITER_LIMIT(key, gl, specmin, mesa, r300, r500, i915, nv30, nv40, desc) \
+  LimitKey{key, gl, desc},
 #include "limits.def"
 #undef ARBITER_LIMIT
   };
@@ -174,18 +190,24 @@ int64_t LimitProfile::Get(std::string_view key) const {
 }
 
 const LimitProfile* BuiltinProfile(std::string_view name) {
-  static const LimitProfile spec_min = MakeProfile(kSpecMin, /*mesa=*/false);
-  static const LimitProfile mesa = MakeProfile(kMesa, /*mesa=*/true);
-  if (name == kSpecMin) {
-    return &spec_min;
-  }
-  if (name == kMesa) {
-    return &mesa;
+  static const std::vector<LimitProfile> profiles = [] {
+    std::vector<LimitProfile> all;
+    for (size_t column = 0; column < kBuiltinNames.size(); ++column) {
+      all.push_back(MakeProfile(column));
+    }
+    return all;
+  }();
+  for (const LimitProfile& profile : profiles) {
+    if (profile.name == name) {
+      return &profile;
+    }
   }
   return nullptr;
 }
 
-std::vector<std::string_view> BuiltinProfileNames() { return {kSpecMin, kMesa}; }
+std::vector<std::string_view> BuiltinProfileNames() {
+  return {kBuiltinNames.begin(), kBuiltinNames.end()};
+}
 
 std::optional<LimitProfile> LoadLimitProfile(const std::string& arg, std::string* error) {
   if (const LimitProfile* builtin = BuiltinProfile(arg)) {

@@ -14,6 +14,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The built-in names as error messages list them.
+constexpr const char* kNames = "'spec-min', 'mesa', 'r300', 'r500', 'i915', 'nv30' or 'nv40'";
+
 TEST(LimitKeysTest, KeysAreUniqueAndWellFormed) {
   const std::vector<LimitKey>& keys = LimitKeys();
   ASSERT_FALSE(keys.empty());
@@ -34,13 +37,19 @@ TEST(LimitKeysTest, KeysAreUniqueAndWellFormed) {
 }
 
 TEST(BuiltinProfileTest, NamesAndUnknownName) {
-  EXPECT_EQ(BuiltinProfileNames(), (std::vector<std::string_view>{"spec-min", "mesa"}));
+  EXPECT_EQ(BuiltinProfileNames(), (std::vector<std::string_view>{"spec-min", "mesa", "r300",
+                                                                  "r500", "i915", "nv30", "nv40"}));
   EXPECT_EQ(BuiltinProfile("nvidia"), nullptr);
   EXPECT_EQ(BuiltinProfile(""), nullptr);
   ASSERT_NE(BuiltinProfile("spec-min"), nullptr);
   EXPECT_EQ(BuiltinProfile("spec-min")->name, "spec-min");
   ASSERT_NE(BuiltinProfile("mesa"), nullptr);
   EXPECT_EQ(BuiltinProfile("mesa")->name, "mesa");
+  for (const std::string_view name : BuiltinProfileNames()) {
+    ASSERT_NE(BuiltinProfile(name), nullptr) << name;
+    EXPECT_EQ(BuiltinProfile(name)->name, name);
+    EXPECT_EQ(BuiltinProfile(name)->base, name);
+  }
 }
 
 TEST(BuiltinProfileTest, EveryProfileDefinesEveryKeyAndNothingElse) {
@@ -75,6 +84,106 @@ TEST(BuiltinProfileTest, MesaMeetsTheSpecMinimums) {
   const LimitProfile& mesa = *BuiltinProfile("mesa");
   for (const LimitKey& key : LimitKeys()) {
     EXPECT_GE(mesa.Get(key.key), spec.Get(key.key)) << key.key;
+  }
+}
+
+// The GPU profiles, spot-checked against the drivers in ../shared/reference/mesa-gpu-limits:
+// one row per value, with the line that gives it (or the computation from it).
+struct DriverFact {
+  const char* profile;
+  const char* key;
+  int64_t value;
+  const char* source;
+};
+
+constexpr DriverFact kDriverFacts[] = {
+    {"r300", "arbfp.max_instructions", 96, "r300_screen.c:270 is_r500 || is_r400 ? 512 : 96"},
+    {"r300", "arbfp.max_alu_instructions", 64, "r300_screen.c:272, radeon_code.h:28"},
+    {"r300", "arbfp.max_tex_instructions", 32, "r300_screen.c:274, radeon_code.h:29"},
+    {"r300", "arbfp.max_tex_indirections", 4, "r300_screen.c:276 is_r500 ? 511 : 4"},
+    {"r300", "arbfp.max_temporaries", 32, "r300_screen.c:296 ... is_r400 ? 64 : 32"},
+    {"r300", "arbfp.max_parameters", 32, "r300_screen.c:291 (is_r500 ? 256 : 32) vec4"},
+    {"r300", "arbfp.max_attribs", 10, "r300_screen.c:287 2 colors + 8 texcoords"},
+    {"r300", "arbfp.max_texture_coords", 8, "min(16 samplers, 8 coordinate units)"},
+    {"r300", "arbfp.max_texture_image_units", 16, "r300_screen.c:299 caps.num_tex_units"},
+    {"r300", "arbfp.max_draw_buffers", 4, "r300_screen.c:212 PIPE_CAP_MAX_RENDER_TARGETS"},
+    {"r300", "arbvp.max_instructions", 256, "r300_screen.c:377, radeon_code.h:250"},
+    {"r300", "arbvp.max_temporaries", 32, "r300_screen.c:389, radeon_code.h:254"},
+    {"r300", "arbvp.max_parameters", 256, "r300_screen.c:385 256 vec4"},
+    {"r500", "arbfp.max_instructions", 512, "r300_screen.c:270 with is_r500"},
+    {"r500", "arbfp.max_tex_indirections", 511, "r300_screen.c:276 with is_r500"},
+    {"r500", "arbfp.max_temporaries", 128, "r300_screen.c:296 with is_r500"},
+    {"r500", "arbfp.max_parameters", 256, "r300_screen.c:291 with is_r500"},
+    {"r500", "arbfp.max_env_parameters", 256, "min(256 parameters, 256)"},
+    {"r500", "arbvp.max_instructions", 1024, "r300_screen.c:377, radeon_code.h:252"},
+    {"r500", "arbvp.max_temporaries", 32, "r300_screen.c:389"},
+    {"i915", "arbfp.max_instructions", 96, "i915_screen.c:326 I915_MAX_ALU_INSN + _TEX_INSN"},
+    {"i915", "arbfp.max_alu_instructions", 64, "i915_screen.c:328, i915_reg.h:458"},
+    {"i915", "arbfp.max_tex_instructions", 32, "i915_screen.c:330, i915_reg.h:457"},
+    {"i915", "arbfp.max_tex_indirections", 4, "i915_screen.c:332, i915_reg.h:456"},
+    {"i915", "arbfp.max_temporaries", 16, "i915_screen.c:345, i915_reg.h:460"},
+    {"i915", "arbfp.max_parameters", 32, "i915_screen.c:340 32 vec4"},
+    {"i915", "arbfp.max_attribs", 10, "i915_screen.c:336, i915_reg.h:504-513"},
+    {"i915", "arbfp.max_texture_coords", 8, "i915_reg.h:504-511 T_TEX0-T_TEX7"},
+    {"i915", "arbfp.max_texture_image_units", 8, "i915_screen.c:361 I915_TEX_UNITS"},
+    {"i915", "arbfp.max_draw_buffers", 1, "i915_screen.c:455"},
+    {"nv30", "arbvp.max_instructions", 256, "nv30_screen.c:334 NV40 ? 512 : 256"},
+    {"nv30", "arbvp.max_temporaries", 13, "nv30_screen.c:348 NV40 ? 32 : 13"},
+    {"nv30", "arbvp.max_parameters", 250, "nv30_screen.c:344 (256 - 6) vec4"},
+    {"nv30", "arbfp.max_tex_indirections", 4096, "nv30_screen.c:395"},
+    {"nv30", "arbfp.max_attribs", 8, "nv30_screen.c:399"},
+    {"nv30", "arbfp.max_parameters", 32, "nv30_screen.c:403 NV40 ? 224 : 32"},
+    {"nv30", "arbfp.max_draw_buffers", 1, "nv30_screen.c:60 NV40 ? 4 : 1"},
+    {"nv40", "arbvp.max_instructions", 512, "nv30_screen.c:334"},
+    {"nv40", "arbvp.max_temporaries", 32, "nv30_screen.c:348"},
+    {"nv40", "arbvp.max_parameters", 462, "nv30_screen.c:344 (468 - 6) vec4"},
+    {"nv40", "arbvp.max_env_parameters", 256, "min(462 parameters, 256)"},
+    {"nv40", "arbfp.max_instructions", 4096, "nv30_screen.c:395"},
+    {"nv40", "arbfp.max_parameters", 224, "nv30_screen.c:403"},
+    {"nv40", "arbfp.max_texture_image_units", 16, "nv30_screen.c:410"},
+    {"nv40", "arbfp.max_draw_buffers", 4, "nv30_screen.c:60"},
+};
+
+TEST(BuiltinProfileTest, DriverFacts) {
+  for (const DriverFact& fact : kDriverFacts) {
+    const LimitProfile* profile = BuiltinProfile(fact.profile);
+    ASSERT_NE(profile, nullptr) << fact.profile;
+    EXPECT_EQ(profile->Get(fact.key), fact.value)
+        << fact.profile << " " << fact.key << " (" << fact.source << ")";
+  }
+}
+
+TEST(BuiltinProfileTest, I915VertexProgramsRunInMesasDrawModule) {
+  // i915_screen.c:320: draw_get_shader_param answers for vertex shaders, Mesa's own limits.
+  const LimitProfile& i915 = *BuiltinProfile("i915");
+  const LimitProfile& mesa = *BuiltinProfile("mesa");
+  for (const LimitKey& key : LimitKeys()) {
+    if (key.key.starts_with("arbvp.")) {
+      EXPECT_EQ(i915.Get(key.key), mesa.Get(key.key)) << key.key;
+    }
+  }
+}
+
+TEST(BuiltinProfileTest, HardwareNeverExceedsMesa) {
+  // What a GPU's profile accepts, the default (Mesa's limits) accepts too.
+  const LimitProfile& mesa = *BuiltinProfile("mesa");
+  for (const std::string_view name : {"r300", "r500", "i915", "nv30", "nv40"}) {
+    for (const LimitKey& key : LimitKeys()) {
+      EXPECT_LE(BuiltinProfile(name)->Get(key.key), mesa.Get(key.key)) << name << " " << key.key;
+    }
+  }
+}
+
+TEST(BuiltinProfileTest, HardwareMeetsTheSpecMinimumsButNv3xFragmentInputs) {
+  // nv30_screen.c:399 reports 8 fragment inputs, fewer than ARB_fragment_program's 10
+  // ("should be possible to do 10 with nv4x"); every other value meets the minimum.
+  const LimitProfile& spec = *BuiltinProfile("spec-min");
+  for (const std::string_view name : {"r300", "r500", "i915", "nv30", "nv40"}) {
+    for (const LimitKey& key : LimitKeys()) {
+      const bool nv3x_inputs = name.starts_with("nv") && key.key == "arbfp.max_attribs";
+      EXPECT_EQ(BuiltinProfile(name)->Get(key.key) >= spec.Get(key.key), !nv3x_inputs)
+          << name << " " << key.key;
+    }
   }
 }
 
@@ -149,6 +258,24 @@ TEST_F(LoadLimitProfileTest, FileOverridesKeysOfItsBase) {
   EXPECT_EQ(profile->Get("arbvp.max_instructions"), mesa.Get("arbvp.max_instructions"));
 }
 
+TEST_F(LoadLimitProfileTest, BaseMayBeAHardwareProfile) {
+  const std::string path = Write("gma950.json", R"({
+    "name": "gma950-more-temps",
+    "base": "i915",
+    "limits": {"arbfp.max_temporaries": 32}
+  })");
+  std::string error;
+  const std::optional<LimitProfile> profile = LoadLimitProfile(path, &error);
+  ASSERT_TRUE(profile.has_value()) << error;
+  EXPECT_EQ(profile->name, "gma950-more-temps");
+  EXPECT_EQ(profile->base, "i915");
+  EXPECT_EQ(profile->Get("arbfp.max_temporaries"), 32);
+  EXPECT_EQ(profile->Get("arbfp.max_tex_indirections"), 4);
+  const std::optional<LimitProfile> nv40 = LoadLimitProfile("nv40", &error);
+  ASSERT_TRUE(nv40.has_value()) << error;
+  EXPECT_EQ(nv40->values, BuiltinProfile("nv40")->values);
+}
+
 TEST_F(LoadLimitProfileTest, DefaultBaseIsSpecMinAndDefaultNameIsThePath) {
   const std::string path = Write("small.json", R"({"limits": {"arbfp.max_temporaries": 8}})");
   std::string error;
@@ -202,9 +329,9 @@ TEST_F(LoadLimitProfileTest, ValuesMustBeNonNegativeIntegers) {
 
 TEST_F(LoadLimitProfileTest, UnknownBase) {
   EXPECT_EQ(ErrorOf(R"({"base": "nvidia"})"),
-            "unknown base profile 'nvidia' in '" + file_ + "' (expected 'spec-min' or 'mesa')");
+            "unknown base profile 'nvidia' in '" + file_ + "' (expected " + kNames + ")");
   EXPECT_EQ(ErrorOf(R"({"base": 3})"),
-            "'base' in '" + file_ + "' must be a string ('spec-min' or 'mesa')");
+            "'base' in '" + file_ + "' must be a string (" + kNames + ")");
 }
 
 TEST_F(LoadLimitProfileTest, WrongShapes) {
@@ -241,8 +368,8 @@ TEST_F(LoadLimitProfileTest, DirectoryIsNotAFile) {
 TEST_F(LoadLimitProfileTest, UnknownProfileName) {
   std::string error;
   EXPECT_FALSE(LoadLimitProfile("nvidia", &error).has_value());
-  EXPECT_EQ(error,
-            "unknown limit profile 'nvidia' (expected 'spec-min' or 'mesa', or a JSON file)");
+  EXPECT_EQ(error, "unknown limit profile 'nvidia' (expected " + std::string(kNames) +
+                       ", or a JSON file)");
 }
 
 }  // namespace

@@ -1,0 +1,13 @@
+!!ARBfp1.0
+# ARGS: --limits i915
+# three texture coordinate sets and five texture indirections: Intel GMA 900/950 (i915) takes
+# four indirections
+TEMP t, u;
+TEX t, fragment.texcoord[0], texture[0], 2D;
+TEX t, t, texture[0], 2D;
+TEX t, t, texture[1], 2D;
+TEX t, t, texture[1], 2D;
+ADD u, t, fragment.texcoord[2];
+TEX t, u, texture[2], 2D;
+MUL result.color, t, fragment.texcoord[1];
+END

@@ -1,0 +1,13 @@
+!!ARBfp1.0
+# ARGS: --limits nv40
+# three texture coordinate sets and five texture indirections: GeForce 6/7 (nv40) take
+# 4096 indirections
+TEMP t, u;
+TEX t, fragment.texcoord[0], texture[0], 2D;
+TEX t, t, texture[0], 2D;
+TEX t, t, texture[1], 2D;
+TEX t, t, texture[1], 2D;
+ADD u, t, fragment.texcoord[2];
+TEX t, u, texture[2], 2D;
+MUL result.color, t, fragment.texcoord[1];
+END
