@@ -1,5 +1,5 @@
 // Fuzz target: the ARB lexer, parser and checker (vertex and fragment programs) on any bytes,
-// in portability mode and under the spec-minimum limit profile.
+// with the default limits (Mesa's), then with an error limit of 1 and the other kind expected.
 #include <cstddef>
 #include <cstdint>
 

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   compiler::SourceFile source(path, std::move(bytes));
   compiler::DiagnosticSink sink;
   arbvp::CheckOptions check_options;
-  check_options.profile = compiler::BuiltinProfile("mesa");  // nullptr: portability mode
+  check_options.profile = compiler::BuiltinProfile("mesa");  // or "r300", "i915", ...
   arbvp::CheckResult checked = arbvp::CheckProgram(source, check_options, &sink);
   sink.PromoteWarnings();  // -Werror
   compiler::FileReport report{path, sink.diagnostics(), sink.dropped()};

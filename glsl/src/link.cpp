@@ -152,7 +152,7 @@ void CheckUniforms(const LinkContext& ctx) {
   }
 }
 
-// The value of a limit to enforce, its profile's name, and whether the spec minimum warns.
+// The value of a limit to enforce: Mesa's without a profile.
 int64_t Enforced(const LinkContext& ctx, const GlslLimit& limit) {
   if (ctx.profile == nullptr) return limit.mesa;
   auto it = ctx.profile->values.find(limit.key);
@@ -160,8 +160,8 @@ int64_t Enforced(const LinkContext& ctx, const GlslLimit& limit) {
   return ctx.profile->name == "mesa" ? limit.mesa : limit.spec_min;
 }
 
-// Sums `items` against one limit; reports at the item that goes past the enforced limit
-// (an error) or, without a profile, past the spec minimum (a warning).
+// Sums `items` against one limit; reports an error at the item that goes past the enforced
+// limit. Going past only the spec minimum is no warning: `--limits spec-min` makes it an error.
 void CheckLimit(const LinkContext& ctx, std::string_view key, Diag diag, std::string_view what,
                 std::string_view unit, const std::vector<Contribution>& items,
                 const Sources& fallback) {
@@ -169,32 +169,21 @@ void CheckLimit(const LinkContext& ctx, std::string_view key, Diag diag, std::st
   int64_t total = 0;
   for (const Contribution& c : items) total += c.amount;
   int64_t enforced = Enforced(ctx, limit);
-  bool error = total > enforced;
-  bool warning = !error && ctx.profile == nullptr && total > limit.spec_min;
-  if (!error && !warning) return;
+  if (total <= enforced) return;
   if (total == 1 && !unit.empty() && unit.back() == 's') unit.remove_suffix(1);
-  int64_t threshold = error ? enforced : limit.spec_min;
   int64_t running = 0;
   const Contribution* past = &items.back();
   for (const Contribution& c : items) {
     running += c.amount;
-    if (running > threshold) {
+    if (running > enforced) {
       past = &c;
       break;
     }
   }
-  std::string message =
-      error ? fmt::format("{} take {} {}, more than {} = {} in profile '{}' ({} goes past it)",
-                          what, total, unit, limit.gl_name, enforced,
-                          ctx.profile ? ctx.profile->name : "mesa", past->what)
-            : fmt::format(
-                  "{} take {} {}, more than the specification's minimum {} = {}; "
-                  "implementations at the minimum refuse to link the program ({} goes "
-                  "past it)",
-                  what, total, unit, limit.gl_name, limit.spec_min, past->what);
-  ctx.Report(error ? diag : Diag::LinkLimitPortability,
-             error ? compiler::Severity::Error : compiler::Severity::Warning, past->file,
-             past->range, fallback, std::move(message));
+  ctx.Report(diag, compiler::Severity::Error, past->file, past->range, fallback,
+             fmt::format("{} take {} {}, more than {} = {} in profile '{}' ({} goes past it)", what,
+                         total, unit, limit.gl_name, enforced,
+                         ctx.profile ? ctx.profile->name : "mesa", past->what));
 }
 
 // GL 2.0 2.15.3-2.15.4 and 3.11.1: the program's resources against the limits.

@@ -10,6 +10,7 @@ namespace arbiter::arbvp {
 namespace {
 
 using ::testing::ElementsAre;
+using ::testing::IsEmpty;
 
 TEST(BadInput, EmptyFile) {
   Checked c = Check("");
@@ -67,9 +68,9 @@ TEST(BadInput, HundredThousandInstructions) {
   text += "MOV result.position, r0;\nEND\n";
   Checked c = Check(text);
   // Within Mesa's limit (an error only under a stricter profile), beyond the spec minimum of
-  // 128: a portability warning at the 129th instruction.
+  // 128, which the default does not warn about.
   EXPECT_TRUE(c.result.ok) << c.Dump().substr(0, 2000);
-  EXPECT_THAT(c.WarningKeys(), ElementsAre("131:1 arb-limit-portability"));
+  EXPECT_THAT(c.diags, IsEmpty()) << c.Dump().substr(0, 2000);
   EXPECT_EQ(c.result.stats.instructions, 100002);
   EXPECT_EQ(c.result.stats.parameters, 1);  // one distinct constant
   Checked strict = Check(text, compiler::BuiltinProfile("spec-min"));

@@ -439,17 +439,15 @@ std::string PrintSelector(const testing::TestParamInfo<SelectorCase>& param_info
   return param_info.param.name;
 }
 
-// Portability mode: silent within spec-min, a warning past it, an error past mesa.
-void ExpectPortabilityMode(const SelectorCase& p) {
+// The default (Mesa's limits): silent within Mesa's limit, even past spec-min; an error
+// past it.
+void ExpectDefault(const SelectorCase& p) {
   std::string at;
   Checked within = CheckSelector(p, p.within, nullptr, &at);
   EXPECT_THAT(within.diags, IsEmpty()) << within.Dump();
   if (p.beyond_min >= 0) {
-    Checked warned = CheckSelector(p, p.beyond_min, nullptr, &at);
-    EXPECT_THAT(warned.ErrorKeys(), IsEmpty()) << warned.Dump();
-    EXPECT_THAT(warned.WarningKeys(), ElementsAre(at + " arb-limit-portability"));
-    ASSERT_FALSE(warned.Warnings().empty());
-    EXPECT_THAT(warned.Warnings()[0].message, HasSubstr("exceeds the specification's minimum"));
+    Checked past_min = CheckSelector(p, p.beyond_min, nullptr, &at);
+    EXPECT_THAT(past_min.diags, IsEmpty()) << past_min.Dump();
   }
   Checked failed = CheckSelector(p, p.beyond_mesa, nullptr, &at);
   EXPECT_THAT(failed.ErrorKeys(), ElementsAre(at + " arb-binding-index-range")) << failed.Dump();
@@ -459,7 +457,7 @@ void ExpectPortabilityMode(const SelectorCase& p) {
   EXPECT_THAT(failed.Errors()[0].message, HasSubstr("in profile 'mesa'"));
 }
 
-// An explicit profile is enforced as is, without portability warnings.
+// An explicit profile is enforced as is.
 void ExpectExplicitProfile(const SelectorCase& p) {
   std::string at;
   Checked within = CheckSelector(p, p.within, SpecMin(), &at);
@@ -478,10 +476,10 @@ void ExpectExplicitProfile(const SelectorCase& p) {
 
 class CheckSelectorRange : public testing::TestWithParam<SelectorCase> {};
 
-TEST_P(CheckSelectorRange, PortabilityAndExplicitProfiles) {
+TEST_P(CheckSelectorRange, DefaultAndExplicitProfiles) {
   {
-    SCOPED_TRACE("portability mode");
-    ExpectPortabilityMode(GetParam());
+    SCOPED_TRACE("default");
+    ExpectDefault(GetParam());
   }
   {
     SCOPED_TRACE("explicit profiles");

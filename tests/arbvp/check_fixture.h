@@ -39,7 +39,7 @@ struct Checked {
 
 // Checks `text` (a whole program with header) with the given options.
 Checked Check(const std::string& text, const CheckOptions& options);
-// Checks `text` (a whole program with header). `profile` null: portability mode.
+// Checks `text` (a whole program with header). `profile` null: Mesa's limits (the default).
 Checked Check(const std::string& text, const compiler::LimitProfile* profile = nullptr);
 // Wraps body lines in "!!ARBvp1.0\n" ... "END\n" (so body line 1 is program line 2).
 Checked CheckVp(const std::string& body, const compiler::LimitProfile* profile = nullptr);

@@ -45,11 +45,10 @@ TEST(CheckLimits, VertexInstructions) {
   EXPECT_THAT(over.ErrorKeys(), ElementsAre("130:1 arb-limit-instructions"));
   EXPECT_THAT(over.Errors()[0].message,
               HasSubstr("MAX_PROGRAM_INSTRUCTIONS_ARB is 128 in profile 'spec-min'"));
-  // Portability mode: one warning at the first instruction past the minimum.
-  Checked portable = CheckVp(Repeat(inst, 131));
-  EXPECT_THAT(portable.ErrorKeys(), IsEmpty());
-  EXPECT_THAT(portable.WarningKeys(), ElementsAre("130:1 arb-limit-portability"));
-  EXPECT_EQ(portable.result.stats.instructions, 131);
+  // The default (Mesa's limits): past the minimum is no warning.
+  Checked mesa = CheckVp(Repeat(inst, 131));
+  EXPECT_THAT(mesa.diags, IsEmpty()) << mesa.Dump();
+  EXPECT_EQ(mesa.result.stats.instructions, 131);
 }
 
 // "a vertex program will fail to load if the number of instructions it contains exceeds the
@@ -183,9 +182,8 @@ TEST(CheckLimits, Temporaries) {
   Checked vp_over = CheckVp(Temps(13) + position, SpecMin());
   EXPECT_THAT(vp_over.ErrorKeys(), ElementsAre("14:6 arb-limit-temporaries"));
   EXPECT_THAT(vp_over.Errors()[0].message, HasSubstr("temporary 't12' (number 13)"));
-  Checked portable = CheckVp(Temps(15) + position);
-  EXPECT_THAT(portable.ErrorKeys(), IsEmpty());
-  EXPECT_THAT(portable.WarningKeys(), ElementsAre("14:6 arb-limit-portability"));
+  Checked mesa = CheckVp(Temps(15) + position);
+  EXPECT_THAT(mesa.diags, IsEmpty()) << mesa.Dump();
   Checked fp_ok = CheckFp(Temps(16), SpecMin());
   EXPECT_THAT(fp_ok.diags, IsEmpty()) << fp_ok.Dump();
   Checked fp_over = CheckFp(Temps(17), SpecMin());
@@ -332,10 +330,80 @@ TEST(CheckLimits, TextureIndirections) {
   Checked over = CheckFp(five, SpecMin());
   EXPECT_THAT(over.ErrorKeys(), ElementsAre("7:1 arb-limit-tex-indirections"));
   EXPECT_THAT(over.Errors()[0].message, HasSubstr("texture indirection 5"));
-  Checked portable = CheckFp(five);
-  EXPECT_THAT(portable.ErrorKeys(), IsEmpty());
-  EXPECT_THAT(portable.WarningKeys(), ElementsAre("7:1 arb-limit-portability"));
-  EXPECT_EQ(portable.result.stats.tex_indirections, 5);
+  Checked mesa = CheckFp(five);
+  EXPECT_THAT(mesa.diags, IsEmpty()) << mesa.Dump();
+  EXPECT_EQ(mesa.result.stats.tex_indirections, 5);
+}
+
+// ---- the GPU profiles ------------------------------------------------------------------------
+
+// Three texture coordinate sets and five texture indirections: past the specification's
+// minimums (2 sets, 4 indirections), within Mesa's and NV40's limits, one indirection too many
+// for i915 and R300 (4: i915_screen.c PIPE_SHADER_CAP_MAX_TEX_INDIRECTIONS, r300_screen.c
+// is_r500 ? 511 : 4).
+const char* const kThreeSetsFiveIndirections =
+    "!!ARBfp1.0\n"
+    "TEMP t, u;\n"
+    "TEX t, fragment.texcoord[0], texture[0], 2D;\n"
+    "TEX t, t, texture[0], 2D;\n"
+    "TEX t, t, texture[1], 2D;\n"
+    "TEX t, t, texture[1], 2D;\n"
+    "ADD u, t, fragment.texcoord[2];\n"
+    "TEX t, u, texture[2], 2D;\n"  // line 8: indirection 5, image unit 2
+    "MUL result.color, t, fragment.texcoord[1];\n"
+    "END\n";
+
+TEST(CheckLimits, DefaultWarnsNothingPastTheMinimums) {
+  Checked mesa = Check(kThreeSetsFiveIndirections);
+  EXPECT_THAT(mesa.diags, IsEmpty()) << mesa.Dump();
+  EXPECT_EQ(mesa.result.stats.tex_indirections, 5);
+  // spec-min is the opt-in: each resource past the minimum is the error of its limit (3
+  // texture coordinate sets, 3 image units, 5 indirections).
+  Checked spec = Check(kThreeSetsFiveIndirections, SpecMin());
+  EXPECT_THAT(spec.ErrorKeys(),
+              ElementsAre("7:29 arb-binding-index-range", "8:19 arb-binding-index-range",
+                          "8:1 arb-limit-tex-indirections"));
+  EXPECT_THAT(spec.WarningKeys(), IsEmpty());
+}
+
+TEST(CheckLimits, I915AndR300TakeFourIndirections) {
+  for (const char* name : {"i915", "r300"}) {
+    SCOPED_TRACE(name);
+    Checked gpu = Check(kThreeSetsFiveIndirections, compiler::BuiltinProfile(name));
+    EXPECT_THAT(gpu.ErrorKeys(), ElementsAre("8:1 arb-limit-tex-indirections"));
+    EXPECT_THAT(gpu.WarningKeys(), IsEmpty());
+    EXPECT_THAT(gpu.Errors()[0].message,
+                HasSubstr("texture indirection 5 exceeds the limit: "
+                          "MAX_PROGRAM_TEX_INDIRECTIONS_ARB is 4 in profile '" +
+                          std::string(name) + "'"));
+  }
+}
+
+TEST(CheckLimits, Nv40AndR500TakeFiveIndirections) {
+  for (const char* name : {"nv40", "nv30", "r500"}) {
+    Checked gpu = Check(kThreeSetsFiveIndirections, compiler::BuiltinProfile(name));
+    EXPECT_THAT(gpu.diags, IsEmpty()) << name << "\n" << gpu.Dump();
+  }
+}
+
+// The GPUs' other fragment limits: i915 has 8 texture image units and 16 temporaries
+// (i915_screen.c PIPE_SHADER_CAP_MAX_TEXTURE_SAMPLERS, _MAX_TEMPS), R300 16 and 32; NV30 8
+// fragment inputs (nv30_screen.c PIPE_SHADER_CAP_MAX_INPUTS).
+TEST(CheckLimits, GpuImageUnitsTemporariesAndInputs) {
+  const std::string unit8 = "TEX result.color, fragment.texcoord[0], texture[8], 2D;\n";
+  EXPECT_THAT(CheckFp(unit8, compiler::BuiltinProfile("i915")).ErrorKeys(),
+              ElementsAre("2:49 arb-binding-index-range"));
+  EXPECT_THAT(CheckFp(unit8, compiler::BuiltinProfile("r300")).diags, IsEmpty());
+  EXPECT_THAT(CheckFp(Temps(17), compiler::BuiltinProfile("i915")).ErrorKeys(),
+              ElementsAre("18:6 arb-limit-temporaries"));
+  EXPECT_THAT(CheckFp(Temps(17), compiler::BuiltinProfile("r300")).diags, IsEmpty());
+  std::string nine_inputs = "MOV result.color, fragment.color;\n";
+  for (int i = 0; i < 8; ++i) {
+    nine_inputs += "MOV result.depth, fragment.texcoord[" + std::to_string(i) + "];\n";
+  }
+  EXPECT_THAT(CheckFp(nine_inputs, compiler::BuiltinProfile("nv30")).ErrorKeys(),
+              ElementsAre("10:19 arb-limit-attributes"));
+  EXPECT_THAT(CheckFp(nine_inputs, compiler::BuiltinProfile("i915")).diags, IsEmpty());
 }
 
 // ---- checker bugs: these assert the specification and fail until the checker is fixed -----

@@ -121,7 +121,7 @@ TEST(CheckTextures, ShadowTargetsOfDifferentUnitsAreIndependent) {
 }
 
 // The unit is checked against MAX_TEXTURE_IMAGE_UNITS_ARB (the selector table in
-// check_bindings_test.cpp covers portability mode); texture[n] is no texcoord set.
+// check_bindings_test.cpp covers the default); texture[n] is no texcoord set.
 TEST(CheckTextures, ImageUnitAndCoordinateSetHaveSeparateLimits) {
   std::string body = "TEX result.color, fragment.texcoord[1], texture[15], 2D;\n";
   Checked mesa = CheckFp(body, compiler::BuiltinProfile("mesa"));

@@ -8,6 +8,7 @@ namespace arbiter::arbvp {
 namespace {
 
 using ::testing::ElementsAre;
+using ::testing::IsEmpty;
 
 // ARBvp 2.14.3.7's example: arr1 is relatively addressed, so its four constants count even
 // though two are identical; of the rest only {0,1,2,3} and {4,3,2,1} are new.
@@ -50,15 +51,15 @@ TEST(ParamCount, AttributesBoundTwiceCountOnce) {
   EXPECT_EQ(c.result.stats.attributes, 2);
 }
 
-// In portability mode the warning comes once, at the first parameter past the spec minimum
-// of 24 fragment-program parameters, not at every later one.
-TEST(ParamCount, PortabilityWarningOnce) {
+// Past the spec minimum of 24 fragment-program parameters: no warning by default, one error
+// with --limits spec-min, at the first parameter past it, not at every later one.
+TEST(ParamCount, PastTheMinimumOnce) {
   std::string list;
   for (int i = 0; i < 30; ++i) list += (i ? ", {" : "{") + std::to_string(i) + "}";
   std::string body = "PARAM p[30] = { " + list + " };\nMOV result.color, p[0];\n";
   Checked c = CheckFp(body);
   ASSERT_TRUE(c.result.ok) << c.Dump();
-  EXPECT_THAT(c.WarningKeys(), ElementsAre("2:7 arb-limit-portability"));
+  EXPECT_THAT(c.diags, IsEmpty()) << c.Dump();
   Checked strict = CheckFp(body, compiler::BuiltinProfile("spec-min"));
   EXPECT_THAT(strict.ErrorKeys(), ElementsAre("2:7 arb-limit-parameters"));
 }

@@ -271,6 +271,15 @@ std::map<std::string, ExampleRef> Examples(const std::vector<LinkExample>& links
 // trigger fails the test (the entry is stale).
 const std::map<std::string, std::string>& NoExample() {
   static const std::map<std::string, std::string> codes = {
+      {"arb-limit-portability",
+       "No longer reported: without `--limits` arbiter enforces Mesa's limits and says nothing "
+       "about the specification's minimums, which no GPU that ran ARB programs had; "
+       "`--limits spec-min` reports a resource past the minimum as the error of its limit "
+       "(`arb-limit-instructions`, `arb-binding-index-range`, ...). The code stays reserved."},
+      {"glsl-link-limit-portability",
+       "No longer reported: without `--limits` arbiter enforces Mesa's limits and says nothing "
+       "about the GL 2.0 minimums; `--limits spec-min` reports a program past them as the "
+       "error of its limit (`glsl-link-limit-uniforms`, ...). The code stays reserved."},
       {"glsl-internal-error",
        "It reports a failure of glslang itself (for instance a program it accepted "
        "stage by stage that it then cannot reflect); no known input triggers it."},
@@ -366,10 +375,10 @@ std::string Generate() {
       "why none can exist.\n\n"
       "Severities: an *error* rejects the program (exit code 1); a *warning* does not, unless\n"
       "`-Werror` is given. Limit checks (`arb-limit-*`, `arb-binding-index-range`,\n"
-      "`glsl-link-limit-*`) depend on the profile: without `--limits`, exceeding the spec\n"
-      "minimum is a portability warning (`arb-limit-portability`, `glsl-link-limit-portability`)\n"
-      "and exceeding what Mesa supports is an error; with `--limits PROFILE`, exceeding the\n"
-      "profile is an error.\n\n";
+      "`glsl-link-limit-*`) depend on the profile: without `--limits`, exceeding what Mesa\n"
+      "supports is an error and exceeding only the spec minimum is not reported; with\n"
+      "`--limits PROFILE` (`spec-min`, `mesa`, a GPU such as `r300` or `i915`, or a JSON file),\n"
+      "exceeding the profile is an error.\n\n";
   for (const CommandLineCode& code : kCommandLineCodes) {
     out += "## " + std::string(code.code) + "\n\n" + code.entry;
   }

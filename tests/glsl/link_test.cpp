@@ -209,7 +209,8 @@ TEST(LinkLimits, FragmentUniformComponents) {
       "uniform vec4 b;\n"
       "uniform int i;\n"
       "void main() { gl_FragColor = a[i] + b; }\n";
-  EXPECT_THAT(Link(vs, fs).diags, ElementsAre("fs:2:14 warning glsl-link-limit-portability"));
+  // The default enforces Mesa's limits: past the minimum is no warning.
+  EXPECT_THAT(Link(vs, fs).diags, IsEmpty());
   EXPECT_THAT(Link(vs, fs, compiler::BuiltinProfile("spec-min")).diags,
               ElementsAre("fs:2:14 error glsl-link-limit-uniforms"));
   EXPECT_THAT(Link(vs, fs, compiler::BuiltinProfile("mesa")).diags, IsEmpty());
@@ -248,7 +249,7 @@ TEST(LinkLimits, VertexUniformComponents) {
       "uniform int i;\n"
       "void main() { gl_Position = m[i] * gl_Vertex * one; }\n";
   std::string fs = "void main() { gl_FragColor = vec4(1.0); }\n";
-  EXPECT_THAT(Link(vs, fs).diags, ElementsAre("vs:2:15 warning glsl-link-limit-portability"));
+  EXPECT_THAT(Link(vs, fs).diags, IsEmpty());
   EXPECT_THAT(Link(vs, fs, compiler::BuiltinProfile("spec-min")).diags,
               ElementsAre("vs:2:15 error glsl-link-limit-uniforms"));
 }
@@ -270,7 +271,7 @@ TEST(LinkLimits, VaryingFloatsCountEachInterpolantOnce) {
   // then the built-ins, gl_FrontColor (line 5) is the varying that goes past 32.
   std::string more = "varying float f;\n" + vs;
   more.replace(more.find("gl_FrontColor"), 0, "f = 1.0; ");
-  EXPECT_THAT(Link(more, fs).diags, ElementsAre("vs:5:12 warning glsl-link-limit-portability"));
+  EXPECT_THAT(Link(more, fs).diags, IsEmpty());
   EXPECT_THAT(Link(more, fs, compiler::BuiltinProfile("spec-min")).diags,
               ElementsAre("vs:5:12 error glsl-link-limit-varyings"));
 }
@@ -305,7 +306,7 @@ TEST(LinkLimits, VertexTextureUnits) {
       "uniform sampler2D height;\n"
       "void main() { gl_Position = ftransform() + texture2D(height, vec2(0.0)); }\n";
   std::string fs = "void main() { gl_FragColor = vec4(1.0); }\n";
-  EXPECT_THAT(Link(vs, fs).diags, ElementsAre("vs:1:19 warning glsl-link-limit-portability"));
+  EXPECT_THAT(Link(vs, fs).diags, IsEmpty());
   EXPECT_THAT(Link(vs, fs, compiler::BuiltinProfile("spec-min")).diags,
               ElementsAre("vs:1:19 error glsl-link-limit-samplers"));
 }
@@ -322,8 +323,7 @@ TEST(LinkLimits, FragmentAndCombinedTextureUnits) {
   EXPECT_THAT(Link(kMain, three, compiler::BuiltinProfile("spec-min")).diags,
               ElementsAre("fs:3:19 error glsl-link-limit-samplers",
                           "fs:3:19 error glsl-link-limit-samplers"));
-  EXPECT_THAT(Link(kMain, three).diags, ElementsAre("fs:3:19 warning glsl-link-limit-portability",
-                                                    "fs:3:19 warning glsl-link-limit-portability"));
+  EXPECT_THAT(Link(kMain, three).diags, IsEmpty());
 }
 
 TEST(LinkLimits, ProfilesWithoutGlslKeys) {

@@ -1,7 +1,6 @@
 // Resource accounting against limit profiles (ARBvp 2.14.3.x and 6.1.12, ARBfp 3.11.3.6).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cstdint>
@@ -109,8 +108,7 @@ class DistinctBindings {
   FlatTable<BindingKey> seen_;
 };
 
-// Counts a resource and reports it once at the first count past the spec minimum
-// (portability mode) and once at the first count past the enforced limit.
+// Counts a resource and reports it once, at the first count past the enforced limit.
 class LimitCounter {
  public:
   LimitCounter(const CheckContext& ctx, std::string_view key, int reserve, Diag diag)
@@ -118,20 +116,16 @@ class LimitCounter {
         key_(key),
         reserve_(reserve),
         diag_(diag),
-        quiet_(QuietLimit(ctx, key_, reserve, /*allow_warning=*/true)),
-        error_(QuietLimit(ctx, key_, reserve, /*allow_warning=*/false)) {}
+        quiet_(QuietLimit(ctx, key_, reserve)) {}
 
   // Counts one more. `describe` returns what is counted ("instruction 129"); it is called
-  // only when a diagnostic may be due, as building it for every count is most of the work.
+  // only when a diagnostic is due, as building it for every count is most of the work.
   template <typename Describe>
   void Add(Range range, const Describe& describe) {
     ++count_;
-    if (failed_ || count_ <= quiet_) return;
-    bool over_error = count_ > error_;
-    if (warned_ && !over_error) return;
-    size_t before = ctx_.sink->diagnostics().size();
-    failed_ = !CheckLimit(ctx_, key_, count_, reserve_, diag_, range, describe(), !warned_);
-    if (ctx_.sink->diagnostics().size() != before) warned_ = true;
+    if (reported_ || count_ <= quiet_) return;
+    reported_ = true;
+    CheckLimit(ctx_, key_, count_, reserve_, diag_, range, describe());
   }
   int64_t count() const { return count_; }
 
@@ -141,10 +135,8 @@ class LimitCounter {
   int reserve_;
   Diag diag_;
   int64_t quiet_;  // counts up to this one report nothing
-  int64_t error_;  // counts past this one are errors
   int64_t count_ = 0;
-  bool warned_ = false;
-  bool failed_ = false;
+  bool reported_ = false;
 };
 
 }  // namespace
@@ -163,21 +155,15 @@ std::string_view CheckContext::StageKey(std::string_view name) const {
 
 namespace {
 
-struct BuiltinLimits {
-  int64_t mesa = 0;
-  int64_t spec_min = 0;
-};
-
-// The built-in profiles' values, by key, where LimitProfile::Get searches a map of strings:
-// the checks look a limit up for every counter and every binding of every program. The keys
-// come from LimitKeys() (StageKey) or are the same literals, merged by the linker: a table
+// The mesa profile's values (the default's), by key, where LimitProfile::Get searches a map of
+// strings: the checks look a limit up for every counter and every binding of every program. The
+// keys come from LimitKeys() (StageKey) or are the same literals, merged by the linker: a table
 // finds them by address, and the text is compared only when the address is not there.
-class BuiltinLimitsTable {
+class MesaLimitsTable {
  public:
-  BuiltinLimitsTable() {
+  MesaLimitsTable() {
     for (const compiler::LimitKey& k : compiler::LimitKeys()) {
-      entries_.push_back({k.key, BuiltinLimits{compiler::BuiltinProfile("mesa")->Get(k.key),
-                                               compiler::BuiltinProfile("spec-min")->Get(k.key)}});
+      entries_.push_back({k.key, compiler::BuiltinProfile("mesa")->Get(k.key)});
     }
     assert(entries_.size() * 2 <= kSlots);
     for (size_t e = 0; e < entries_.size(); ++e) {
@@ -187,23 +173,22 @@ class BuiltinLimitsTable {
     }
   }
 
-  const BuiltinLimits& Get(std::string_view key) const {
-    static const BuiltinLimits kUnknown;  // what LimitProfile::Get answers (after its assert)
+  int64_t Get(std::string_view key) const {
     for (size_t i = SlotOf(key.data()); by_address_[i] != 0; i = (i + 1) % kSlots) {
       const Entry& e = entries_[by_address_[i] - 1u];
-      if (e.key.data() == key.data() && e.key.size() == key.size()) return e.limits;
+      if (e.key.data() == key.data() && e.key.size() == key.size()) return e.limit;
     }
     for (const Entry& e : entries_) {
-      if (e.key == key) return e.limits;
+      if (e.key == key) return e.limit;
     }
     assert(false && "unknown limit key");
-    return kUnknown;
+    return 0;  // what LimitProfile::Get answers (after its assert)
   }
 
  private:
   struct Entry {
     std::string_view key;
-    BuiltinLimits limits;
+    int64_t limit;
   };
   static constexpr size_t kSlots = 256;
   static size_t SlotOf(const char* p) {
@@ -214,50 +199,33 @@ class BuiltinLimitsTable {
   std::array<uint16_t, kSlots> by_address_{};  // entry index + 1; 0: empty
 };
 
-const BuiltinLimits& BuiltinLimitsOf(std::string_view key) {
-  static const BuiltinLimitsTable table;
+int64_t MesaLimit(std::string_view key) {
+  static const MesaLimitsTable table;
   return table.Get(key);
 }
 
 }  // namespace
 
+// Without a profile, the mesa profile's limits.
 int64_t CheckContext::EnforcedLimit(std::string_view key) const {
-  return profile ? profile->Get(key) : BuiltinLimitsOf(key).mesa;
+  return profile ? profile->Get(key) : MesaLimit(key);
 }
 
-int64_t CheckContext::SpecMinLimit(std::string_view key) { return BuiltinLimitsOf(key).spec_min; }
-
-// One table lookup for both built-in limits: every limit counter of every program asks.
-int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve, bool allow_warning) {
-  if (ctx.profile) return ctx.profile->Get(key) - reserve;
-  const BuiltinLimits& builtin = BuiltinLimitsOf(key);
-  if (!allow_warning) return builtin.mesa - reserve;
-  return std::min(builtin.mesa, builtin.spec_min) - reserve;
+int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve) {
+  return ctx.EnforcedLimit(key) - reserve;
 }
 
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
-                Range range, std::string_view what, bool allow_warning) {
-  const compiler::LimitProfile* enforced =
-      ctx.profile ? ctx.profile : compiler::BuiltinProfile("mesa");
+                Range range, std::string_view what) {
   int64_t limit = ctx.EnforcedLimit(key) - reserve;
+  if (used <= limit) return true;
   std::string reserve_note =
       reserve > 0 ? fmt::format(" ({} reserved by the program's options)", reserve) : "";
-  if (used > limit) {
-    ctx.Report(diag, range,
-               fmt::format("{} exceeds the limit: {} is {} in profile '{}'{}", what, GlName(key),
-                           limit, enforced->name, reserve_note));
-    return false;
-  }
-  if (!ctx.profile && allow_warning) {
-    int64_t minimum = CheckContext::SpecMinLimit(key) - reserve;
-    if (used > minimum) {
-      ctx.Report(Diag::LimitPortability, range,
-                 fmt::format("{} exceeds the specification's minimum {} = {}{}; "
-                             "implementations at the minimum reject it",
-                             what, GlName(key), minimum, reserve_note));
-    }
-  }
-  return true;
+  ctx.Report(
+      diag, range,
+      fmt::format("{} exceeds the limit: {} is {} in profile '{}'{}", what, GlName(key), limit,
+                  ctx.profile ? std::string_view(ctx.profile->name) : "mesa", reserve_note));
+  return false;
 }
 
 void CheckResources(const CheckContext& ctx) {

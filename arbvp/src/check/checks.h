@@ -16,7 +16,7 @@ struct CheckContext {
   const Program& program;
   const compiler::SourceFile& source;
   compiler::DiagnosticSink* sink;
-  // Explicit profile (--limits), or null for portability mode (spec-min warns, mesa errs).
+  // Explicit profile (--limits), or null for Mesa's limits (the mesa profile).
   const compiler::LimitProfile* profile;
   Stats* stats;
   int errors_before = 0;  // the sink's error count before this program
@@ -26,22 +26,19 @@ struct CheckContext {
   }
   // The limit key of a stage-specific resource: "arbvp.<name>" or "arbfp.<name>".
   std::string_view StageKey(std::string_view name) const;
-  // The value of limit `key` in the enforced profile (--limits, else mesa), and in spec-min.
+  // The value of limit `key` in the enforced profile (--limits, else mesa).
   int64_t EnforcedLimit(std::string_view key) const;
-  static int64_t SpecMinLimit(std::string_view key);
 };
 
 // Checks `used` against the limit `key` (minus `reserve`, what options take for
 // themselves). `used` is a count, or index + 1 for a selector. Reports `diag` (error) when
-// over the enforced limit, or arb-limit-portability (warning) when only over spec-min in
-// portability mode. Returns false when an error was reported.
+// over the enforced limit. Returns false when it did.
 bool CheckLimit(const CheckContext& ctx, std::string_view key, int64_t used, int reserve, Diag diag,
-                Range range, std::string_view what, bool allow_warning = true);
+                Range range, std::string_view what);
 
 // The largest `used` that CheckLimit passes without a diagnostic; hot callers compare with
 // it first so that they build the message only when one may be reported.
-int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve,
-                   bool allow_warning = true);
+int64_t QuietLimit(const CheckContext& ctx, std::string_view key, int reserve);
 
 // The variables some instruction indexes with an address register.
 std::set<int> RelativelyAddressed(const Program& program);

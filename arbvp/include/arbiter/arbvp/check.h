@@ -12,9 +12,9 @@
 namespace arbiter::arbvp {
 
 struct CheckOptions {
-  // The limit profile to enforce. nullptr: portability mode, where exceeding the spec-min
-  // profile is a warning and exceeding the mesa profile (what real implementations take)
-  // is an error.
+  // The limit profile to enforce. nullptr: the mesa profile's limits (what Mesa takes), with
+  // no warning for going past the specification's minimum (compiler::BuiltinProfile
+  // ("spec-min") makes that an error).
   const compiler::LimitProfile* profile = nullptr;
   // The program kind the caller expects (--stage); nullopt: take it from the header.
   std::optional<ProgramKind> expected_kind;

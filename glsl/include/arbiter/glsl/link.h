@@ -15,8 +15,8 @@
 namespace arbiter::glsl {
 
 struct LinkOptions {
-  // The limits to enforce. nullptr: Mesa's values are enforced, and going past the GL 2.0
-  // minimum is the warning glsl-link-limit-portability. A profile makes going past its values
+  // The limits to enforce. nullptr: Mesa's values (going past the GL 2.0 minimum is no
+  // warning; the profile "spec-min" makes it an error). A profile makes going past its values
   // an error; a GLSL key it lacks (compiler/src/limits.def has none yet) takes GlslLimits()'
   // Mesa value for the profile "mesa" and the spec minimum for any other.
   const compiler::LimitProfile* profile = nullptr;

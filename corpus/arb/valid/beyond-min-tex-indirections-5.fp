@@ -1,6 +1,6 @@
 !!ARBfp1.0
 # five texture indirections: beyond the minimum of 4, accepted by Mesa (ARBfp 3.11.3.6, 3.11.6)
-# EXPECT-WARNING: 10:1 arb-limit-portability
+# no warning by default (Mesa takes it); --limits spec-min rejects it
 # A five-deep dependent chain; each TEX reads the temporary the previous one wrote.
 TEMP a, b, c;
 TEX a, fragment.texcoord[0], texture[0], 2D;      # indirection 1
