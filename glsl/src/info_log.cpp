@@ -391,6 +391,17 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
       text = std::string(Trim(body.substr(close + 3)));
     }
   }
+  // A name glslang could not take was shortened (PrepareForGlslang): the line has the real one.
+  if (token.rfind(kLongNamePrefix, 0) == 0 && line > 0 && file != nullptr &&
+      static_cast<uint32_t>(line) <= file->line_count()) {
+    const std::vector<Token> words = Tokenize(file->LineText(static_cast<uint32_t>(line)));
+    for (const Token& w : words) {
+      if (w.kind == Token::Identifier && w.text.size() > 1000) {
+        token = std::string(w.text);
+        break;
+      }
+    }
+  }
   if (!link && !m.warning && token == "line continuation" && line > 0) {
     return EmitLineContinuation(ctx, file, line, CleanText(text), sink);
   }
@@ -435,6 +446,8 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
         "; {} leaves such an access undefined (sections 5.5 and 5.6), it is "
         "no error",
         ctx.version == 120 ? "GLSL 1.20" : "GLSL 1.10");
+  } else if (token.size() > 64) {
+    message += fmt::format(" ('{}...', {} characters)", token.substr(0, 32), token.size());
   } else if (!token.empty()) {
     message += fmt::format(" ('{}')", token);
   }

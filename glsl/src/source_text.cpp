@@ -3,8 +3,11 @@
 // checks that a location it reads from the AST names the token it expects.
 #include "source_text.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -160,6 +163,29 @@ void NestFunctionBodies(std::string* text) {
   }
 }
 
+// glslang's preprocessor refuses a name past 1 024 characters ("name too long"); 1.10 sets no
+// limit. Such a name becomes a short one of the same length (a hash of it, blank-padded), the
+// same in every string, so columns and the program's meaning stay.
+void ShortenLongNames(std::string* text) {
+  constexpr size_t kLongest = 1000;
+  for (size_t i = 0; i < text->size();) {
+    const bool starts = IsIdentStart((*text)[i]) && (i == 0 || !IsIdentChar((*text)[i - 1]));
+    if (!starts) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (end < text->size() && IsIdentChar((*text)[end])) ++end;
+    if (end - i > kLongest) {
+      const size_t hash = std::hash<std::string_view>{}(std::string_view(*text).substr(i, end - i));
+      std::string name = fmt::format("{}{:016x}", kLongNamePrefix, hash);
+      name.resize(end - i, ' ');
+      text->replace(i, end - i, name);
+    }
+    i = end;
+  }
+}
+
 }  // namespace
 
 std::string PrepareForGlslang(std::string_view text) {
@@ -174,6 +200,7 @@ std::string PrepareForGlslang(std::string_view text) {
   }
   ReplaceWords(&out, /*to_glslang=*/true);
   NestFunctionBodies(&out);
+  ShortenLongNames(&out);
   return out;
 }
 

@@ -9,9 +9,12 @@ namespace arbiter::glsl {
 
 // The source as glslang must see it: vertical tab and form feed blanked (1.10 3.1 counts
 // them as white space), a lone carriage return made a line feed (3.1 ends lines at either),
-// words that 1.10 does not reserve but glslang 12 does renamed (3.6), and function bodies
-// that redeclare a parameter nested one scope deeper (4.2).
+// words that 1.10 does not reserve but glslang 12 does renamed (3.6), function bodies
+// that redeclare a parameter nested one scope deeper (4.2), and names longer than glslang
+// takes shortened.
 std::string PrepareForGlslang(std::string_view text);
+// The start of the name a name too long for glslang gets (then a hash, then blanks).
+inline constexpr std::string_view kLongNamePrefix = "arbiter_long_name_";
 
 // The user's spelling of glslang's text (a message, a symbol name): undoes the renaming.
 std::string RestoreSpelling(std::string_view text);

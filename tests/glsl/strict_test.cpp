@@ -156,6 +156,17 @@ TEST(Strict, ConstantIndexPastVectorWarns) {
               ElementsAre("4:23 glsl-index-out-of-range", "4:23 glsl-index-out-of-range"));
 }
 
+// 1.10 sets no limit on a name's length; glslang refuses past 1 024 characters.
+TEST(Strict, NamesHaveNoLengthLimit) {
+  const std::string name(2000, 'a');
+  EXPECT_THAT(Check(Stage::Fragment, "#if 0\n" + std::string(16384, 'b') +
+                                         "\n#endif\nvoid main() {\n  float " + name +
+                                         " = 1.0;\n  gl_FragColor = vec4(" + name + ");\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Fragment, "void main() {\n  gl_FragColor = vec4(" + name + ");\n}\n"),
+              ElementsAre("2:23 glsl-undeclared-identifier"));
+}
+
 // 3.3: #error's message is the shader's own; words in it ("array", "version") do not pick the
 // code.
 TEST(Strict, ErrorDirectiveHasItsOwnCode) {
