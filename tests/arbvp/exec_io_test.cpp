@@ -136,7 +136,10 @@ TEST(ExecTexture, MakesPatternTexturesFromTheFlag) {
 TEST(ExecTexture, RejectsBadFlags) {
   ExecInputs inputs;
   std::string error;
-  EXPECT_FALSE(ApplyTextureFlag("8=2d:checker", &inputs, &error));
+  // Image units past the eight coordinate sets are valid up to 31 (exec.h).
+  EXPECT_TRUE(ApplyTextureFlag("8=2d:checker", &inputs, &error)) << error;
+  EXPECT_TRUE(ApplyTextureFlag("31=2d:checker", &inputs, &error)) << error;
+  EXPECT_FALSE(ApplyTextureFlag("32=2d:checker", &inputs, &error));
   EXPECT_FALSE(ApplyTextureFlag("0=4d:checker", &inputs, &error));
   EXPECT_FALSE(ApplyTextureFlag("0=2d:plaid", &inputs, &error));
   EXPECT_NE(error.find("unknown pattern 'plaid'"), std::string::npos) << error;
@@ -178,7 +181,8 @@ TEST(ExecVectorsJson, RejectsMalformedFilesWithAReason) {
       {"{\"vectors\": [{\"vertex.color\": \"red\"}]}", "vectors[0]"},
       {"{\"textures\": {\"0\": {\"target\": \"2d\", \"size\": [2, 2], \"texels\": [1]}}}",
        "needs 16"},
-      {"{\"textures\": {\"9\": {\"pattern\": \"checker\"}}}", "no texture unit"},
+      // Image units are 0 to 31 (Mesa's MAX_TEXTURE_IMAGE_UNITS_ARB), not the 8 coordinate sets.
+      {"{\"textures\": {\"32\": {\"pattern\": \"checker\"}}}", "no texture unit in [0, 32)"},
       {"{\"textures\": {\"0\": {}}}", "needs a pattern or texels"},
   };
   for (const Case& c : cases) {

@@ -136,7 +136,7 @@ class ExecGlslTest : public ::testing::Test {
       v.vertex.normal = {0.25f * f, 1.0f, -0.5f, 1.0f};
       v.vertex.color = {0.1f * f, 1.5f, -0.25f, 0.75f};
       v.vertex.fogcoord = {3.0f + f, 0.0f, 0.0f, 1.0f};
-      for (size_t k = 0; k < arbvp::kMaxTextureUnits; ++k) {
+      for (size_t k = 0; k < arbvp::kMaxTextureCoords; ++k) {
         v.vertex.texcoord[k] = {f + static_cast<float>(k), -f, 0.5f, 2.0f};
         v.fragment.texcoord[k] = {0.125f + 0.25f * static_cast<float>((i + k) % 4),
                                   0.375f + 0.25f * static_cast<float>(i % 2),

@@ -810,6 +810,41 @@ TEST_F(ExecTest, EachTextureTarget) {
   }
 }
 
+// Texture image units are a set of their own, larger than the eight coordinate sets
+// (ARBfp 3.11.2 <texImageUnitNum> is below MAX_TEXTURE_IMAGE_UNITS_ARB, 32 on Mesa): Unity's
+// shaders sample units 8 to 15. Both Mesa engines bind textures there.
+TEST_F(ExecTest, ImageUnitsPastTheCoordinateSets) {
+  arbvp::ExecInputs in = Inputs(1);
+  in.textures[8] = Texture(arbvp::TexDim::Tex2D, 2, 2, 1);
+  in.textures[15] = Texture(arbvp::TexDim::Tex1D, 4, 1, 1);
+  in.textures[31] = Texture(arbvp::TexDim::Tex2D, 2, 1, 1);
+  in.vectors[0].fragment.texcoord[0] = {0.75f, 0.75f, 0, 1};  // 2D 2x2: texel (1, 1) = 3
+  in.vectors[0].fragment.texcoord[1] = {0.6f, 0, 0, 1};       // 1D 4: texel 2
+  in.vectors[0].fragment.texcoord[2] = {0.25f, 0.5f, 0, 1};   // 2D 2x1: texel 0
+  const std::string fp =
+      "!!ARBfp1.0\nOPTION ARB_draw_buffers;\n"
+      "TEX result.color[0], fragment.texcoord[0], texture[8], 2D;\n"
+      "TEX result.color[1], fragment.texcoord[1], texture[15], 1D;\n"
+      "TEX result.color[2], fragment.texcoord[2], texture[31], 2D;\n"
+      "END\n";
+  std::unique_ptr<arbvp::Program> program = Parse(fp);
+  ASSERT_NE(program, nullptr);
+  std::vector<arbvp::VectorResult> arb;
+  std::vector<arbvp::VectorResult> glsl;
+  std::string error;
+  ASSERT_TRUE(executor_->Run({nullptr, program.get()}, in, &arb, &error)) << error;
+  ASSERT_TRUE(
+      executor_->RunTranslated({nullptr, program.get()}, arbvp::EmitOptions{}, in, &glsl, &error))
+      << error;
+  for (const auto* engine : {&arb, &glsl}) {
+    ASSERT_EQ(engine->size(), 1u);
+    const arbvp::VectorResult& r = engine->front();
+    EXPECT_TRUE(Value(r, "result.color[0]", Texel(3))) << (engine == &arb ? "arb" : "glsl");
+    EXPECT_TRUE(Value(r, "result.color[1]", Texel(2))) << (engine == &arb ? "arb" : "glsl");
+    EXPECT_TRUE(Value(r, "result.color[2]", Texel(0))) << (engine == &arb ? "arb" : "glsl");
+  }
+}
+
 TEST_F(ExecTest, ShadowComparison) {
   arbvp::ExecInputs in = Inputs(2);
   for (int unit = 0; unit < 3; ++unit) {

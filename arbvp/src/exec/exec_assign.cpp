@@ -121,7 +121,7 @@ const std::vector<Setter>& Setters() {
     vtx("vertex.matrixindex", &VertexInput::matrix_index);
     t.push_back({"vertex.texcoord", Shape::Vec4, 0,
                  [](const Target& x) -> Place { return Of(x.vector->vertex.texcoord[0]); }});
-    t.push_back({"vertex.texcoord[]", Shape::Vec4, kMaxTextureUnits, [](const Target& x) -> Place {
+    t.push_back({"vertex.texcoord[]", Shape::Vec4, kMaxTextureCoords, [](const Target& x) -> Place {
                    return Of(x.vector->vertex.texcoord[static_cast<size_t>(x.idx[0])]);
                  }});
     t.push_back({"vertex.attrib[]", Shape::Vec4, kMaxGenericAttribs, [](const Target& x) -> Place {
@@ -139,7 +139,7 @@ const std::vector<Setter>& Setters() {
     t.push_back({"fragment.texcoord", Shape::Vec4, 0,
                  [](const Target& x) -> Place { return Of(x.vector->fragment.texcoord[0]); }});
     t.push_back(
-        {"fragment.texcoord[]", Shape::Vec4, kMaxTextureUnits, [](const Target& x) -> Place {
+        {"fragment.texcoord[]", Shape::Vec4, kMaxTextureCoords, [](const Target& x) -> Place {
            return Of(x.vector->fragment.texcoord[static_cast<size_t>(x.idx[0])]);
          }});
     t.push_back({"fragment.fogcoord", Shape::Scalar, 0,
@@ -156,7 +156,7 @@ const std::vector<Setter>& Setters() {
     mat("state.matrix.modelview[]", 1, [](GlState& s, int) { return &s.modelview; });
     mat("state.matrix.projection", 0, [](GlState& s, int) { return &s.projection; });
     mat("state.matrix.texture", 0, [](GlState& s, int) { return &s.texture[0]; });
-    mat("state.matrix.texture[]", kMaxTextureUnits,
+    mat("state.matrix.texture[]", kMaxTextureCoords,
         [](GlState& s, int i) { return &s.texture[static_cast<size_t>(i)]; });
     mat("state.matrix.program[]", kMaxProgramMatrices,
         [](GlState& s, int i) { return &s.program[static_cast<size_t>(i)]; });
@@ -205,12 +205,12 @@ const std::vector<Setter>& Setters() {
 
     const char coords[] = {'s', 't', 'r', 'q'};
     for (size_t c = 0; c < 4; ++c) {
-      t.push_back({(fmt::format("state.texgen[].eye.{}", coords[c])), Shape::Vec4, kMaxTextureUnits,
-                   [c](const Target& x) -> Place {
+      t.push_back({(fmt::format("state.texgen[].eye.{}", coords[c])), Shape::Vec4,
+                   kMaxTextureCoords, [c](const Target& x) -> Place {
                      return Of(x.inputs->state.texgen[static_cast<size_t>(x.idx[0])].eye[c]);
                    }});
       t.push_back({(fmt::format("state.texgen[].object.{}", coords[c])), Shape::Vec4,
-                   kMaxTextureUnits, [c](const Target& x) -> Place {
+                   kMaxTextureCoords, [c](const Target& x) -> Place {
                      return Of(x.inputs->state.texgen[static_cast<size_t>(x.idx[0])].object[c]);
                    }});
     }
@@ -234,7 +234,7 @@ const std::vector<Setter>& Setters() {
     t.push_back({"state.texenv.color", Shape::Vec4, 0,
                  [](const Target& x) -> Place { return Of(x.inputs->state.texenv_color[0]); }});
     t.push_back(
-        {"state.texenv[].color", Shape::Vec4, kMaxTextureUnits, [](const Target& x) -> Place {
+        {"state.texenv[].color", Shape::Vec4, kMaxTextureCoords, [](const Target& x) -> Place {
            return Of(x.inputs->state.texenv_color[static_cast<size_t>(x.idx[0])]);
          }});
     state_field("state.depth.range", Shape::Vec2,

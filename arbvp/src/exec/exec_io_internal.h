@@ -17,7 +17,7 @@ bool ParseFloat(std::string_view text, float* out);
 // Sets the named input (exec_io.h) to `values`.
 bool Assign(std::string_view name, const Values& values, ExecInputs* inputs, InputVector* vector,
             std::string* error);
-// A texture unit number in [0, kMaxTextureUnits).
+// A texture unit number in [0, kMaxTextureImageUnits).
 bool ParseUnit(std::string_view s, int* unit);
 // A texture object of the JSON vectors file.
 bool ParseTextureJson(const nlohmann::json& j, Texture* t, std::string* error);

@@ -87,7 +87,7 @@ bool ParseVectorsJson(std::string_view text, ExecInputs* inputs, std::string* er
       Texture t;
       if (!ParseUnit(unit_text, &unit)) {
         *error = fmt::format("textures: '{}' is no texture unit in [0, {})", unit_text,
-                             kMaxTextureUnits);
+                             kMaxTextureImageUnits);
         return false;
       }
       if (!ParseTextureJson(tex, &t, error)) {

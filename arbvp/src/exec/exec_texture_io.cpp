@@ -133,7 +133,7 @@ bool JsonString(const nlohmann::json& obj, const char* key, std::string* out) {
 bool ParseUnit(std::string_view s, int* unit) {
   auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), *unit);
   return !s.empty() && ec == std::errc() && end == s.data() + s.size() && *unit >= 0 &&
-         *unit < kMaxTextureUnits;
+         *unit < kMaxTextureImageUnits;
 }
 
 bool ParseTextureJson(const nlohmann::json& j, Texture* t, std::string* error) {
@@ -254,7 +254,7 @@ bool ApplyTextureFlag(std::string_view flag, ExecInputs* inputs, std::string* er
     *error = fmt::format(
         "'{}' is not UNIT=TARGET:PATTERN[:SIZE][:FILTER][:WRAP] with a unit "
         "in [0, {})",
-        flag, kMaxTextureUnits);
+        flag, kMaxTextureImageUnits);
     return false;
   }
   std::vector<std::string_view> parts;

@@ -120,7 +120,7 @@ using Fields = std::map<int, uint8_t>;
 
 void AddField(const Binding& b, Fields* fields) {
   auto add = [fields](int id, uint8_t mask) { (*fields)[id] |= mask; };
-  bool texcoord_ok = b.index >= 0 && b.index < kMaxTextureUnits;
+  bool texcoord_ok = b.index >= 0 && b.index < kMaxTextureCoords;
   if (b.kind == BindingKind::VertexAttrib) {
     switch (b.vertex_attrib) {
       case VertexAttrib::Position:

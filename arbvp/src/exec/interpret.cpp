@@ -66,7 +66,7 @@ const Output* FindOutput(const Outputs& outputs, ResultReg reg, int32_t index = 
 struct FragmentSource {
   Reg color{};
   Reg secondary{};
-  std::array<Reg, kMaxTextureUnits> texcoord{};
+  std::array<Reg, kMaxTextureCoords> texcoord{};
   Val fogcoord;
   Reg position{};
 };
@@ -85,8 +85,8 @@ FragmentSource FromFragmentInput(const FragmentInput& in, size_t vector_index) {
   return f;
 }
 
-Vec4 Element(const std::array<Vec4, kMaxTextureUnits>& a, int32_t index) {
-  if (index < 0 || index >= kMaxTextureUnits) return {0.0f, 0.0f, 0.0f, 1.0f};
+Vec4 Element(const std::array<Vec4, kMaxTextureCoords>& a, int32_t index) {
+  if (index < 0 || index >= kMaxTextureCoords) return {0.0f, 0.0f, 0.0f, 1.0f};
   return a[static_cast<size_t>(index)];
 }
 
@@ -131,7 +131,7 @@ Reg FragmentAttribValue(const Binding& b, const FragmentSource& f) {
     case FragmentAttrib::SecondaryColor:
       return f.secondary;
     case FragmentAttrib::TexCoord:
-      if (b.index < 0 || b.index >= kMaxTextureUnits) {
+      if (b.index < 0 || b.index >= kMaxTextureCoords) {
         return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
       }
       return f.texcoord[static_cast<size_t>(b.index)];

@@ -31,7 +31,7 @@ void EmitVertex(const ExecGl& gl, const RunPlan& plan, const arbvp::InputVector&
     gl.VertexAttrib4fvARB(static_cast<GLuint>(a.color), in.color.data());
     gl.VertexAttrib4fvARB(static_cast<GLuint>(a.secondary_color), in.secondary_color.data());
     gl.VertexAttrib4fvARB(static_cast<GLuint>(a.fogcoord), fog.data());
-    for (int k = 0; k < arbvp::kMaxTextureUnits; ++k) {
+    for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
       gl.VertexAttrib4fvARB(static_cast<GLuint>(a.texcoord0 + k),
                             in.texcoord[static_cast<size_t>(k)].data());
     }
@@ -43,7 +43,7 @@ void EmitVertex(const ExecGl& gl, const RunPlan& plan, const arbvp::InputVector&
   gl.Color4fv(in.color.data());
   gl.SecondaryColor3fv(in.secondary_color.data());
   gl.FogCoordf(in.fogcoord[0]);
-  for (int k = 0; k < arbvp::kMaxTextureUnits; ++k) {
+  for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
     gl.MultiTexCoord4fv(static_cast<GLenum>(GL_TEXTURE0 + k),
                         in.texcoord[static_cast<size_t>(k)].data());
   }

@@ -284,7 +284,7 @@ std::string PassThroughVertex() {
       "MOV result.pointsize.x, one;\n",
       kFragmentInputAttribs.position, kFragmentInputAttribs.color,
       kFragmentInputAttribs.secondary_color, kFragmentInputAttribs.fogcoord);
-  for (int k = 0; k < arbvp::kMaxTextureUnits; ++k) {
+  for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
     text += fmt::format("MOV result.texcoord[{}], vertex.attrib[{}];\n", k,
                         kFragmentInputAttribs.texcoord0 + k);
   }
@@ -386,7 +386,8 @@ bool PlanRun(const ArbPrograms& programs, const ContextLimits& limits, RunPlan* 
     }
     SortOutputs(&plan->outputs);
     // Vertex outputs travel as texture coordinates, eight per pass.
-    const size_t per_pass = static_cast<size_t>(std::min(max_attachments, arbvp::kMaxTextureUnits));
+    const size_t per_pass =
+        static_cast<size_t>(std::min(max_attachments, arbvp::kMaxTextureCoords));
     for (size_t first = 0; first < plan->outputs.size(); first += per_pass) {
       Editor e = r.editor;
       Pass pass;

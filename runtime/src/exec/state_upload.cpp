@@ -49,7 +49,7 @@ void UploadGlState(const ExecGl& gl, const arbvp::GlState& state) {
                                static_cast<GLdouble>(p[2]), static_cast<GLdouble>(p[3])};
     gl.ClipPlane(static_cast<GLenum>(GL_CLIP_PLANE0 + i), plane);
   }
-  for (int unit = 0; unit < arbvp::kMaxTextureUnits; ++unit) {
+  for (int unit = 0; unit < arbvp::kMaxTextureCoords; ++unit) {
     const size_t u = static_cast<size_t>(unit);
     gl.ActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     for (size_t c = 0; c < 4; ++c) {

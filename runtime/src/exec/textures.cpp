@@ -145,8 +145,9 @@ bool UploadTextures(const ExecGl& gl, const std::map<int, arbvp::Texture>& textu
                     std::vector<GLuint>* created, std::string* error) {
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (const auto& [unit, texture] : textures) {
-    if (unit < 0 || unit >= arbvp::kMaxTextureUnits) {
-      *error = fmt::format("texture unit {} is outside 0..{}", unit, arbvp::kMaxTextureUnits - 1);
+    if (unit < 0 || unit >= arbvp::kMaxTextureImageUnits) {
+      *error =
+          fmt::format("texture unit {} is outside 0..{}", unit, arbvp::kMaxTextureImageUnits - 1);
       return false;
     }
     GLuint name = 0;

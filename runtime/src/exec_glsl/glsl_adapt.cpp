@@ -261,7 +261,7 @@ std::vector<GeneratedAttribute> FragmentInputAttributes() {
                                            "arbiter_in_texcoord2", "arbiter_in_texcoord3",
                                            "arbiter_in_texcoord4", "arbiter_in_texcoord5",
                                            "arbiter_in_texcoord6", "arbiter_in_texcoord7"};
-  for (int k = 0; k < arbvp::kMaxTextureUnits; ++k) {
+  for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
     out.push_back({kTexcoords[k], a.texcoord0 + k});
   }
   return out;

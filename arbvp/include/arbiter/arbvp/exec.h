@@ -51,7 +51,14 @@ struct TexGenState {
                              Vec4{0, 0, 0, 0}};
 };
 
-inline constexpr int kMaxTextureUnits = 8;  // texture coordinate sets and image units
+// Texture coordinate sets (vertex.texcoord[n], fragment.texcoord[n], result.texcoord[n]) and
+// the legacy texture units of state.matrix.texture[n], state.texgen[n], state.texenv[n]: Mesa's
+// MAX_TEXTURE_COORDS and MAX_TEXTURE_UNITS.
+inline constexpr int kMaxTextureCoords = 8;
+// Texture image units (texture[n] of TEX, TXP, TXB), a separate and larger set: Mesa's
+// fragment MAX_TEXTURE_IMAGE_UNITS_ARB (`arbfp.max_texture_image_units` in
+// compiler/src/limits.def). Real programs sample past the coordinate sets (Unity: 8 to 15).
+inline constexpr int kMaxTextureImageUnits = 32;
 inline constexpr int kMaxLights = 8;
 inline constexpr int kMaxClipPlanes = 6;
 inline constexpr int kMaxProgramMatrices = 8;  // state.matrix.program[n]
@@ -64,12 +71,12 @@ struct GlState {
   // Matrices as GL holds them (glm is column-major like GL). ARB reads their rows.
   glm::mat4 modelview{1.0f};
   glm::mat4 projection{1.0f};
-  std::array<glm::mat4, kMaxTextureUnits> texture{};  // identity after construction
+  std::array<glm::mat4, kMaxTextureCoords> texture{};  // identity after construction
   std::array<glm::mat4, kMaxProgramMatrices> program{};
   std::array<MaterialState, 2> material{};  // front, back
   std::array<LightState, kMaxLights> light{};
   Vec4 light_model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
-  std::array<TexGenState, kMaxTextureUnits> texgen{};
+  std::array<TexGenState, kMaxTextureCoords> texgen{};
   Vec4 fog_color{0.0f, 0.0f, 0.0f, 0.0f};
   float fog_density = 1.0f;
   float fog_start = 0.0f;
@@ -80,7 +87,7 @@ struct GlState {
   float point_size_max = 1.0f;  // GL's initial value is implementation-dependent; fixed here
   float point_fade_threshold = 1.0f;
   std::array<float, 3> point_attenuation{1.0f, 0.0f, 0.0f};
-  std::array<Vec4, kMaxTextureUnits> texenv_color{};  // (0,0,0,0) initially
+  std::array<Vec4, kMaxTextureCoords> texenv_color{};  // (0,0,0,0) initially
   float depth_near = 0.0f;
   float depth_far = 1.0f;
 
@@ -140,7 +147,7 @@ struct VertexInput {
   Vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
   Vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
   Vec4 fogcoord{0.0f, 0.0f, 0.0f, 1.0f};
-  std::array<Vec4, kMaxTextureUnits> texcoord;  // (0,0,0,1)
+  std::array<Vec4, kMaxTextureCoords> texcoord;  // (0,0,0,1)
   Vec4 matrix_index{0.0f, 0.0f, 0.0f, 0.0f};
   // (0,0,0,1). generic[0] is never read: vertex.attrib[0] is `position` (ARBvp 2.7).
   std::array<Vec4, kMaxGenericAttribs> generic;
@@ -154,7 +161,7 @@ struct VertexInput {
 struct FragmentInput {
   Vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
   Vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
-  std::array<Vec4, kMaxTextureUnits> texcoord;  // (0,0,0,1)
+  std::array<Vec4, kMaxTextureCoords> texcoord;  // (0,0,0,1)
   float fogcoord = 0.0f;
   float depth = 0.5f;  // window z in [depth_near, depth_far]
   FragmentInput();
