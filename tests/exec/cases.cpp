@@ -556,6 +556,9 @@ void StateCases(Table& t) {
         in.state.light[4].spot_cutoff = 60;
       },
       {1, 0, 0, 0.5f}, Tolerance::Absolute);
+  // A light at its initial position (0,0,1,0) (GL 2.0 table 6.11): P = (0,0,1), so
+  // h_inf = ||(0,0,1) + (0,0,1)|| = (0,0,1), w = 1. Light 7: no other case moves it.
+  state("light_half_default", "state.light[7].half", nullptr, {0, 0, 1, 1});
   // (1,0,0,0): normalize((1,0,0) + (0,0,1)) = (0.7071, 0, 0.7071).
   state(
       "light_half_infinite", "state.light[0].half",

@@ -845,6 +845,26 @@ TEST_F(ExecTest, ImageUnitsPastTheCoordinateSets) {
   }
 }
 
+// state.light[n].half of a light at its initial position (0,0,1,0) (GL 2.0 table 6.11):
+// h_inf = ||(0,0,1) + (0,0,1)|| = (0,0,1), w = 1 (ARBvp 2.14.2). The translation derives it
+// from gl_LightSource[n].position and gets it on both drivers. Mesa's ARB engine reads
+// (0,0,0,0) while the light's position has never changed on the context (mesa-deviations.md),
+// which depends on the tests before this one, so its value is not pinned here (the exec case
+// state_light_half_default pins it).
+TEST_F(ExecTest, LightHalfOfTheInitialPositionThroughTheTranslation) {
+  std::unique_ptr<arbvp::Program> program = Parse(
+      "!!ARBvp1.0\nMOV result.texcoord[0], state.light[7].half;\n"
+      "MOV result.position, vertex.position;\nEND\n");
+  ASSERT_NE(program, nullptr);
+  std::vector<arbvp::VectorResult> glsl;
+  std::string error;
+  ASSERT_TRUE(executor_->RunTranslated({program.get(), nullptr}, arbvp::EmitOptions{}, Inputs(1),
+                                       &glsl, &error))
+      << error;
+  ASSERT_EQ(glsl.size(), 1u);
+  EXPECT_TRUE(Near(glsl[0], "result.texcoord[0]", {0.0f, 0.0f, 1.0f, 1.0f}, 1e-6f));
+}
+
 TEST_F(ExecTest, ShadowComparison) {
   arbvp::ExecInputs in = Inputs(2);
   for (int unit = 0; unit < 3; ++unit) {
