@@ -186,6 +186,29 @@ void ShortenLongNames(std::string* text) {
   }
 }
 
+// `varying struct S { ... };` and `attribute struct S { ... };` declare a type and no
+// variable: 1.10's grammar takes a fully_specified_type without a declarator, and with no
+// variable there is no varying or attribute of structure type (4.3.4, 4.3.6). glslang refuses
+// a "vertex-shader struct output" there; without the qualifier it reads the same type.
+void DropQualifierOfTypeOnlyStruct(std::string* text) {
+  const std::vector<Token> tokens = Tokenize(*text);
+  for (size_t i = 0; i + 3 < tokens.size(); ++i) {
+    if ((tokens[i].text != "varying" && tokens[i].text != "attribute") ||
+        tokens[i + 1].text != "struct" || tokens[i + 3].text != "{") {
+      continue;
+    }
+    int depth = 0;
+    size_t close = i + 3;
+    for (; close < tokens.size(); ++close) {
+      if (tokens[close].text == "{") ++depth;
+      if (tokens[close].text == "}" && --depth == 0) break;
+    }
+    if (close + 1 < tokens.size() && tokens[close + 1].text == ";") {
+      text->replace(tokens[i].offset, tokens[i].text.size(), tokens[i].text.size(), ' ');
+    }
+  }
+}
+
 }  // namespace
 
 std::string PrepareForGlslang(std::string_view text) {
@@ -201,6 +224,7 @@ std::string PrepareForGlslang(std::string_view text) {
   ReplaceWords(&out, /*to_glslang=*/true);
   NestFunctionBodies(&out);
   ShortenLongNames(&out);
+  DropQualifierOfTypeOnlyStruct(&out);
   return out;
 }
 
