@@ -105,9 +105,7 @@ std::function<int()> AddLinkCommand(CLI::App* app) {
   CommonOptions& common = options->common;
   AddFormatOption(link, &common.format, {"text", "json", "sarif"});
   AddColorOption(link, &common.color);
-  link->add_option("--limits", common.limits,
-                   "limit profile: spec-min, mesa, or a JSON file (default: portability "
-                   "warnings)");
+  AddLimitsOption(link, &common.limits);
   AddErrorLimitOption(link, &common.error_limit);
   AddWerrorFlag(link, &common.werror);
   AddGlslOptions(link, &common);

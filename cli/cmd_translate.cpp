@@ -267,7 +267,7 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
   cmd->add_flag("--no-comments", options->no_comments,
                 "do not precede statements with the ARB instruction");
   AddStageOption(cmd, &common.stage, /*glsl=*/false);
-  cmd->add_option("--limits", common.limits, "limit profile for checking the inputs");
+  AddLimitsOption(cmd, &common.limits);
   AddColorOption(cmd, &common.color);
   AddErrorLimitOption(cmd, &common.error_limit);
   AddWerrorFlag(cmd, &common.werror);

@@ -265,9 +265,7 @@ void AddCommonOptions(CLI::App* app, CommonOptions* options, bool diagnostics) {
                   diagnostics ? std::vector<std::string>{"text", "json", "sarif"}
                               : std::vector<std::string>{"text", "json"});
   AddColorOption(app, &options->color);
-  app->add_option("--limits", options->limits,
-                  "limit profile: spec-min, mesa, r300, r500, i915, nv30, nv40, or a JSON file "
-                  "(default: mesa, without warnings past the spec minimums)");
+  AddLimitsOption(app, &options->limits);
   AddStageOption(app, &options->stage, /*glsl=*/true);
   if (diagnostics) {
     AddErrorLimitOption(app, &options->error_limit);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "arbiter/compiler/limits.h"
+
 namespace arbiter::cli {
 
 namespace {
@@ -40,6 +42,17 @@ void AddErrorLimitOption(CLI::App* cmd, int* error_limit) {
                   "stop reporting errors of a file after N (0: no limit)")
       ->check(CLI::Range(0, kMaxCount))
       ->capture_default_str();
+}
+
+void AddLimitsOption(CLI::App* cmd, std::string* limits) {
+  std::string names;
+  for (std::string_view name : compiler::BuiltinProfileNames()) {
+    names += fmt::format("{}, ", name);
+  }
+  cmd->add_option("--limits", *limits,
+                  fmt::format("limit profile: {}or a JSON file (default: mesa, without warnings "
+                              "past the spec minimums)",
+                              names));
 }
 
 void AddWerrorFlag(CLI::App* cmd, bool* werror) {

@@ -24,6 +24,8 @@ void AddColorOption(CLI::App* cmd, std::string* color);
 // --stage: the kind of an ARB program read from stdin; with `glsl`, vert and frag too.
 void AddStageOption(CLI::App* cmd, std::string* stage, bool glsl);
 void AddErrorLimitOption(CLI::App* cmd, int* error_limit);
+// --limits: a built-in profile (compiler::BuiltinProfileNames) or a JSON file.
+void AddLimitsOption(CLI::App* cmd, std::string* limits);
 void AddWerrorFlag(CLI::App* cmd, bool* werror);
 // -j: `unit` is what runs in parallel ("worker threads", "worker processes").
 void AddJobsOption(CLI::App* cmd, int* jobs, std::string_view unit);
