@@ -36,7 +36,7 @@ _arbiter() {
     fi
   done
   if [[ -z "$command" ]]; then
-    COMPREPLY=($(compgen -W "$commands -h --help --version" -- "$cur"))
+    COMPREPLY=($(compgen -W "$commands help -h --help -V --version" -- "$cur"))
     return 0
   fi
 
