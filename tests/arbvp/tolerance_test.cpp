@@ -517,6 +517,22 @@ TEST(ToleranceDeviation, LrpWithAnInfiniteOperand) {
   EXPECT_EQ(finite.deviations[0], 0u);
 }
 
+TEST(ToleranceDeviation, ComparisonOfNanIsFoldedOnTheGlslPathOnly) {
+  // SGE: NaN >= 1 is false (0) by the pseudo-code; Mesa's GLSL compiler may fold it with
+  // another comparison of the same operand (a >= max(b, c)) and lose the NaN.
+  OutputRegister sge = Fp("SGE o, v, 1;\n", {kNan, 2.0f, 0.0f, 1.0f});
+  EXPECT_EQ(sge.value, (Vec4{0, 1, 0, 1}));
+  EXPECT_TRUE(sge.deviations[0] & kDevNanCompareFolded);
+  for (size_t i = 1; i < 4; ++i) EXPECT_FALSE(sge.deviations[i] & kDevNanCompareFolded) << i;
+  OutputRegister slt = Fp("SLT o, 1, v;\n", {kNan, 2.0f, 0.0f, 1.0f});
+  EXPECT_EQ(slt.value, (Vec4{0, 1, 0, 0}));
+  EXPECT_TRUE(slt.deviations[0] & kDevNanCompareFolded);
+  EXPECT_FALSE(slt.deviations[1] & kDevNanCompareFolded);
+  EXPECT_TRUE(ApplicableDeviations("mesa-glsl", "softpipe") & kDevNanCompareFolded);
+  EXPECT_TRUE(ApplicableDeviations("mesa-glsl", "llvmpipe") & kDevNanCompareFolded);
+  EXPECT_FALSE(ApplicableDeviations("mesa-arb", "softpipe") & kDevNanCompareFolded);
+}
+
 TEST(ToleranceDeviation, LitZeroPowZeroOnZOnly) {
   OutputRegister o = Vp("LIT o, v;\n", {1.0f, 0.0f, 0.0f, 0.0f});
   EXPECT_EQ(o.value, (Vec4{1, 1, 1, 1}));

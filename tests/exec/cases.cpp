@@ -16,6 +16,8 @@ const float kInf = INFINITY;
 const float kNaN = NAN;
 const float kDenorm = 1.0e-40f;  // a denormal float
 const float kHuge = 3.0e38f;
+// The reason the interpreter gives a product of 0 and an infinity or NaN.
+const char* const kZeroTimesNonFinite = "0 times an infinity or NaN";
 
 std::string Fp(const std::string& body) { return "!!ARBfp1.0\n" + body + "END\n"; }
 std::string Vp(const std::string& body) { return "!!ARBvp1.0\n" + body + "END\n"; }
@@ -203,10 +205,22 @@ void AluCases(Table& t) {
   // -0 - +0 = -0.
   t.Fp1("sub", "ARBfp 3.11.5.27", "SUB result.color, e0, e1;\n", {{-0.0f, 1, 3, 4}, {0, 1, 2, 1}},
         {Eq(kColor, {-0.0f, 0.0f, 1, 3})});
-  // -0 * 5 = -0 (rule 2); inf * 0 = NaN; a denormal times 1 stays (rule 3).
+  // -0 * 5 = -0 (rule 2); inf * 0 is undefined (below); a denormal times 1 stays (rule 3).
   t.Fp1("mul_special", "ARBfp 3.11.5.19", "MUL result.color, e0, e1;\n",
-        {{2, -0.0f, kInf, kDenorm}, {3, 5, 0, 1}}, {Eq(kColor, {6, -0.0f, kNaN, kDenorm})});
+        {{2, -0.0f, kInf, kDenorm}, {3, 5, 0, 1}},
+        {Eq(kColor, {6, -0.0f, 0, kDenorm}, 0xB), Undef(kColor, 0x4, kZeroTimesNonFinite)});
+  // Rule 2, "+/-0.0 * <x> = +/-0.0, at least for all <x> that correspond to representable
+  // numbers (IEEE "not a number" and "infinity" encodings may be exceptions)": 0 * NaN,
+  // -0 * inf and NaN * 0 may give 0 or NaN, so they are undefined; inf * 2 is inf.
+  t.Fp1("mul_zero_non_finite", "ARBfp 3.11.5.19 rule 2; GL 2.0 2.1.1",
+        "MUL result.color, e0, e1;\n", {{0, -0.0f, kNaN, kInf}, {kNaN, kInf, 0, 2}},
+        {Eq(kColor, {0, 0, 0, kInf}, 0x8), Undef(kColor, 0x7, kZeroTimesNonFinite)});
   // 0 * 5 + -0 = +0 + -0 = +0.
+  // The product of MAD is "subject to the same rules" as MUL's: 0 * inf undefined, 2 * inf
+  // + 1 = inf, 1 * 0 + 1 = 1.
+  t.Fp1("mad_zero_non_finite", "ARBfp 3.11.5.15, 3.11.5.19 rule 2",
+        "MAD result.color, e0, e1, e2;\n", {{0, 2, 1, kNaN}, {kInf, kInf, 0, 0}, {1, 1, 1, 1}},
+        {Eq(kColor, {0, kInf, 1, 0}, 0x6), Undef(kColor, 0x9, kZeroTimesNonFinite)});
   t.Fp1("mad", "ARBfp 3.11.5.15", "MAD result.color, e0, e1, e2;\n",
         {{2, 3, 4, 0}, {0.5f, 2, -1, 5}, {1, 1, 1, -0.0f}}, {Eq(kColor, {2, 7, -3, 0.0f})});
   // MAX: (a > b) ? a : b -> NaN > 3 is false: 3; -0 > +0 false: +0; 5 > NaN false: NaN.
@@ -224,8 +238,14 @@ void AluCases(Table& t) {
         {Eq(kColor, {32, 32, 32, 32})});
   t.Fp1("dp4", "ARBfp 3.11.5.6", "DP4 result.color, e0, e1;\n", {{1, 2, 3, 4}, {5, 6, 7, 8}},
         {Eq(kColor, {70, 70, 70, 70})});
-  t.Fp1("dp4_nan_and_inf", "IEEE: inf * 0 = NaN poisons the sum", "DP4 result.color.x, e0, e1;\n",
-        {{kInf, 1, 1, 1}, {0, 1, 1, 1}}, {Eq(kColor, {kNaN, 0, 0, 0}, 0x1)});
+  // A dot product is a sum of products: inf * 0 in one term makes the sum undefined
+  // (3.11.5.19 rule 2); inf * 2 + 1 + 1 = inf is defined.
+  t.Fp1("dp4_nan_and_inf", "ARBfp 3.11.5.6, 3.11.5.19 rule 2", "DP4 result.color.x, e0, e1;\n",
+        {{kInf, 1, 1, 1}, {0, 1, 1, 1}}, {Undef(kColor, 0x1, kZeroTimesNonFinite)});
+  t.Fp1("dp3_infinite", "ARBfp 3.11.5.5", "DP3 result.color.x, e0, e1;\n",
+        {{kInf, 1, 1, 0}, {2, 1, 1, kNaN}}, {Eq(kColor, {kInf, 0, 0, 0}, 0x1)});
+  t.Fp1("dph_zero_non_finite", "ARBfp 3.11.5.7, 3.11.5.19 rule 2", "DPH result.color.x, e0, e1;\n",
+        {{1, 0, 1, 5}, {1, kNaN, 1, 1}}, {Undef(kColor, 0x1, kZeroTimesNonFinite)});
   // 1*4 + 2*5 + 3*6 + 7 (tmp0.w ignored).
   t.Fp1("dph", "ARBfp 3.11.5.7", "DPH result.color, e0, e1;\n", {{1, 2, 3, 999}, {4, 5, 6, 7}},
         {Eq(kColor, {39, 39, 39, 39})});
@@ -239,9 +259,24 @@ void AluCases(Table& t) {
   t.Fp1("cmp", "ARBfp 3.11.5.3", "CMP result.color, e0, e1, e2;\n",
         {{-1, 0, -0.0f, kNaN}, {10, 20, 30, 40}, {1, 2, 3, 4}}, {Eq(kColor, {10, 2, 3, 4})});
   // a*b + (1-a)*c: 0.25*4 + 0.75*8 = 7; 0*8 + 1*0 = 0; 12; 0.5*2 + 0.5*6 = 4.
+  // a*b + (1-a)*c: 0*inf and (1-1)*inf are undefined; 0.5*inf + 0.5*6 = inf; 0*3 + 1*NaN
+  // = NaN.
+  t.Fp1("lrp_zero_non_finite", "ARBfp 3.11.5.14, 3.11.5.19 rule 2",
+        "LRP result.color, e0, e1, e2;\n",
+        {{0, 1, 0.5f, 0}, {kInf, 2, kInf, 3}, {4, kInf, 6, kNaN}},
+        {Eq(kColor, {0, 0, kInf, kNaN}, 0xC), Undef(kColor, 0x3, kZeroTimesNonFinite)});
   t.Fp1("lrp", "ARBfp 3.11.5.14", "LRP result.color, e0, e1, e2;\n",
         {{0.25f, 0, 1, 0.5f}, {4, 8, 12, 2}, {8, 0, 4, 6}}, {Eq(kColor, {7, 0, 12, 4})});
   // (2*6 - 3*5, 3*4 - 1*6, 1*5 - 2*4) = (-3, 6, -3).
+  // DST.y = a.y * b.y = 0 * inf: undefined; x = 1, z = a.z, w = b.w.
+  t.Fp1("dst_zero_non_finite", "ARBfp 3.11.5.8, 3.11.5.19 rule 2", "DST result.color, e0, e1;\n",
+        {{5, 0, 3, 7}, {6, kInf, 8, 9}},
+        {Eq(kColor, {1, 0, 3, 9}, 0xD), Undef(kColor, 0x2, kZeroTimesNonFinite)});
+  // XPD of (0,1,0) and (inf,0,0): x = 1*0 - 0*0 = 0; y = 0*inf - 0*0 (undefined);
+  // z = 0*0 - 1*inf = -inf.
+  t.Fp1("xpd_zero_non_finite", "ARBfp 3.11.5.29, 3.11.5.19 rule 2",
+        "XPD result.color.xyz, e0, e1;\n", {{0, 1, 0, 0}, {kInf, 0, 0, 0}},
+        {Eq(kColor, {0, 0, -kInf, 0}, 0x5), Undef(kColor, 0x2, kZeroTimesNonFinite)});
   t.Fp1("xpd", "ARBfp 3.11.5.29", "XPD result.color, e0, e1;\n", {{1, 2, 3, 7}, {4, 5, 6, 7}},
         {Eq(kColor, {-3, 6, -3, 0}, 0x7), Undef(kColor, 0x8, "XPD w at 5:1")});
   t.Fp1("swz", "ARBfp 3.11.5.28", "SWZ result.color, e0, -y, 0, 1, -w;\n", {{1, 2, 3, 4}},

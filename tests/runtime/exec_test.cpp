@@ -62,6 +62,25 @@ class ExecTest : public ::testing::Test {
     return results;
   }
 
+  // A fragment program alone on both Mesa engines: the ARB program and its translation.
+  struct BothEngines {
+    std::vector<arbvp::VectorResult> arb;
+    std::vector<arbvp::VectorResult> glsl;
+  };
+  BothEngines RunFragmentOnBoth(const std::string& fp, const arbvp::ExecInputs& inputs) {
+    BothEngines r;
+    std::unique_ptr<arbvp::Program> f = Parse(fp);
+    if (f == nullptr) return r;
+    std::string error;
+    EXPECT_TRUE(executor_->Run({nullptr, f.get()}, inputs, &r.arb, &error)) << error;
+    EXPECT_TRUE(
+        executor_->RunTranslated({nullptr, f.get()}, arbvp::EmitOptions{}, inputs, &r.glsl, &error))
+        << error;
+    EXPECT_EQ(r.arb.size(), inputs.vectors.size());
+    EXPECT_EQ(r.glsl.size(), inputs.vectors.size());
+    return r;
+  }
+
   static arbvp::ExecInputs Inputs(size_t count) {
     arbvp::ExecInputs inputs;
     inputs.vectors.resize(count);
@@ -821,27 +840,20 @@ TEST_F(ExecTest, ImageUnitsPastTheCoordinateSets) {
   in.vectors[0].fragment.texcoord[0] = {0.75f, 0.75f, 0, 1};  // 2D 2x2: texel (1, 1) = 3
   in.vectors[0].fragment.texcoord[1] = {0.6f, 0, 0, 1};       // 1D 4: texel 2
   in.vectors[0].fragment.texcoord[2] = {0.25f, 0.5f, 0, 1};   // 2D 2x1: texel 0
-  const std::string fp =
+  BothEngines both = RunFragmentOnBoth(
       "!!ARBfp1.0\nOPTION ARB_draw_buffers;\n"
       "TEX result.color[0], fragment.texcoord[0], texture[8], 2D;\n"
       "TEX result.color[1], fragment.texcoord[1], texture[15], 1D;\n"
       "TEX result.color[2], fragment.texcoord[2], texture[31], 2D;\n"
-      "END\n";
-  std::unique_ptr<arbvp::Program> program = Parse(fp);
-  ASSERT_NE(program, nullptr);
-  std::vector<arbvp::VectorResult> arb;
-  std::vector<arbvp::VectorResult> glsl;
-  std::string error;
-  ASSERT_TRUE(executor_->Run({nullptr, program.get()}, in, &arb, &error)) << error;
-  ASSERT_TRUE(
-      executor_->RunTranslated({nullptr, program.get()}, arbvp::EmitOptions{}, in, &glsl, &error))
-      << error;
-  for (const auto* engine : {&arb, &glsl}) {
+      "END\n",
+      in);
+  for (const auto* engine : {&both.arb, &both.glsl}) {
     ASSERT_EQ(engine->size(), 1u);
     const arbvp::VectorResult& r = engine->front();
-    EXPECT_TRUE(Value(r, "result.color[0]", Texel(3))) << (engine == &arb ? "arb" : "glsl");
-    EXPECT_TRUE(Value(r, "result.color[1]", Texel(2))) << (engine == &arb ? "arb" : "glsl");
-    EXPECT_TRUE(Value(r, "result.color[2]", Texel(0))) << (engine == &arb ? "arb" : "glsl");
+    const char* name = engine == &both.arb ? "arb" : "glsl";
+    EXPECT_TRUE(Value(r, "result.color[0]", Texel(3))) << name;
+    EXPECT_TRUE(Value(r, "result.color[1]", Texel(2))) << name;
+    EXPECT_TRUE(Value(r, "result.color[2]", Texel(0))) << name;
   }
 }
 
@@ -1057,6 +1069,39 @@ TEST_F(ExecTest, ErrorsAreReported) {
   auto ok = Run("", "!!ARBfp1.0\nMOV result.color, fragment.color;\nEND\n", Inputs(1));
   ASSERT_EQ(ok.size(), 1u);
   EXPECT_TRUE(Value(ok[0], "result.color", {1.0f, 1.0f, 1.0f, 1.0f}));
+}
+
+// SGE of a NaN is 0 ("tmp.x = (tmp0.x >= tmp1.x) ? 1.0 : 0.0", ARBfp 3.11.5.24), and a
+// product of comparisons (the specs' branch-free "and") keeps it. Mesa's GLSL compiler folds
+// (a >= b) * (a >= c) into a >= max(b, c), whose maxNum drops a NaN b: the translation then
+// gives the other comparison's result (deviation nan-compare-folded, mesa-deviations.md).
+// The ARB engine keeps the spec's value on softpipe; on llvmpipe it folds too (verify covers
+// that by llvmpipe-nonfinite: nothing computed from a NaN is compared on llvmpipe).
+TEST_F(ExecTest, ProductOfComparisonsWithANan) {
+  arbvp::ExecInputs in = Inputs(1);
+  in.vectors[0].fragment.color = {std::numeric_limits<float>::quiet_NaN(), -1.0f, 127.5f, -0.5f};
+  in.vectors[0].fragment.texcoord[0] = {2.0f, 3.0f, 4.0f, 5.0f};
+  BothEngines both = RunFragmentOnBoth(
+      "!!ARBfp1.0\nTEMP r0, r1;\n"
+      "SGE r0, fragment.color, fragment.color.yzxw;\n"
+      "SGE r1, fragment.color, fragment.color.zxyw;\n"
+      "MUL r0, r0, r1;\n"
+      "MUL result.color, r0, fragment.texcoord[0];\nEND\n",
+      in);
+  ASSERT_EQ(both.arb.size(), 1u);
+  ASSERT_EQ(both.glsl.size(), 1u);
+  // r0 = (NaN >= -1, -1 >= 127.5, 127.5 >= NaN, 1) = (0, 0, 0, 1); r1 = (NaN >= 127.5,
+  // -1 >= NaN, 127.5 >= -1, 1) = (0, 0, 1, 1); their product (0, 0, 0, 1).
+  // Measured: z = 127.5 >= max(NaN, -1) = 1, times 4.
+  EXPECT_TRUE(Value(both.arb[0], "result.color", {0.0f, 0.0f, Llvmpipe() ? 4.0f : 0.0f, 5.0f}));
+  EXPECT_TRUE(Value(both.glsl[0], "result.color", {0.0f, 0.0f, 4.0f, 5.0f}));
+  // One comparison alone is not folded: the spec's (0, 0, 0, 1) on both engines and drivers.
+  BothEngines one = RunFragmentOnBoth(
+      "!!ARBfp1.0\nSGE result.color, fragment.color, fragment.color.yzxw;\nEND\n", in);
+  ASSERT_EQ(one.arb.size(), 1u);
+  ASSERT_EQ(one.glsl.size(), 1u);
+  EXPECT_TRUE(Value(one.arb[0], "result.color", {0.0f, 0.0f, 0.0f, 1.0f}));
+  EXPECT_TRUE(Value(one.glsl[0], "result.color", {0.0f, 0.0f, 0.0f, 1.0f}));
 }
 
 TEST_F(ExecTest, LitZeroToTheZero) {

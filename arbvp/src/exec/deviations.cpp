@@ -26,6 +26,11 @@ const std::vector<DeviationInfo>& KnownDeviations() {
       {kDevMirrorCentreSoftpipe, "softpipe-mirror-centre", true, true, "softpipe",
        "a LINEAR lookup with MIRRORED_REPEAT exactly at a texel centre of a mirrored period "
        "(s = -0.375 on 4 texels): softpipe returns the neighbouring texel"},
+      {kDevNanCompareFolded, "nan-compare-folded", false, true, "",
+       "SGE or SLT with a NaN operand, which the specs' comparison makes 0: Mesa's GLSL "
+       "compiler folds a product of two comparisons sharing an operand, (a >= b) * (a >= c), "
+       "into one comparison with max or min, a >= max(b, c), whose maxNum drops the NaN, so "
+       "the product takes the other comparison's result"},
   };
   return kTable;
 }

@@ -90,6 +90,27 @@ Reg ScalarResult(const OpContext& c, float v, Val dep, float err, bool undefined
   return Replicate(From(v, {dep}, err));
 }
 
+// MUL rule 2 (ARBvp 2.14.5.19, ARBfp 3.11.5.19): "+/-0.0 * <x> = +/-0.0, at least for all
+// <x> that correspond to representable numbers (IEEE "not a number" and "infinity" encodings
+// may be exceptions)"; GL 2.0 2.1.1 likewise. So 0 * inf and 0 * NaN may be 0 or NaN: IEEE
+// gives NaN, Mesa's GLSL compiler folds a product with a known 0 (a constant, a false SGE) to
+// 0. The rule holds for every product of the pseudo-code (MAD's is "subject to the same
+// rules", the dot products, DST, XPD, LRP); a result computed through such a product is
+// undefined.
+bool ZeroTimesNonFinite(float a, float b) {
+  return (a == 0.0f && !std::isfinite(b)) || (b == 0.0f && !std::isfinite(a));
+}
+bool AnyZeroTimesNonFinite(const Val* a, const Val* b, size_t n) {
+  for (size_t i = 0; i < n; ++i) {
+    if (ZeroTimesNonFinite(a[i].v, b[i].v)) return true;
+  }
+  return false;
+}
+Val UndefinedIfZeroProduct(const OpContext& c, bool zero_times_non_finite, Val r) {
+  if (zero_times_non_finite && r.why == kDefined) r.why = c.Undefined("0 times an infinity or NaN");
+  return r;
+}
+
 // A sum of products sum(a[i] * b[i]) + add: each product's box, the sum's rounding in any
 // order (n roundings of the terms' magnitude).
 float DotBound(float v, const Val* a, const Val* b, size_t n, const Val* add) {
@@ -188,8 +209,9 @@ Reg OpDP3(OpContext& c) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   float dot = a[0].v * b[0].v + a[1].v * b[1].v + a[2].v * b[2].v;
-  return Replicate(From(dot, {a[0], a[1], a[2], b[0], b[1], b[2]},
-                        DotBound(dot, a.data(), b.data(), 3, nullptr)));
+  return Replicate(UndefinedIfZeroProduct(c, AnyZeroTimesNonFinite(a.data(), b.data(), 3),
+                                          From(dot, {a[0], a[1], a[2], b[0], b[1], b[2]},
+                                               DotBound(dot, a.data(), b.data(), 3, nullptr))));
 }
 
 // DP4: the four-component dot product, replicated.
@@ -197,8 +219,10 @@ Reg OpDP4(OpContext& c) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   float dot = a[0].v * b[0].v + a[1].v * b[1].v + a[2].v * b[2].v + a[3].v * b[3].v;
-  return Replicate(From(dot, {a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]},
-                        DotBound(dot, a.data(), b.data(), 4, nullptr)));
+  return Replicate(
+      UndefinedIfZeroProduct(c, AnyZeroTimesNonFinite(a.data(), b.data(), 4),
+                             From(dot, {a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]},
+                                  DotBound(dot, a.data(), b.data(), 4, nullptr))));
 }
 
 // DPH: tmp0.xyz . tmp1.xyz + tmp1.w, replicated.
@@ -206,8 +230,9 @@ Reg OpDPH(OpContext& c) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   float dot = a[0].v * b[0].v + a[1].v * b[1].v + a[2].v * b[2].v + b[3].v;
-  return Replicate(From(dot, {a[0], a[1], a[2], b[0], b[1], b[2], b[3]},
-                        DotBound(dot, a.data(), b.data(), 3, &b[3])));
+  return Replicate(UndefinedIfZeroProduct(c, AnyZeroTimesNonFinite(a.data(), b.data(), 3),
+                                          From(dot, {a[0], a[1], a[2], b[0], b[1], b[2], b[3]},
+                                               DotBound(dot, a.data(), b.data(), 3, &b[3]))));
 }
 
 // DST: (1, tmp0.y * tmp1.y, tmp0.z, tmp1.w)
@@ -215,7 +240,10 @@ Reg OpDST(OpContext& c) {
   const Reg& a = c.src[0];
   const Reg& b = c.src[1];
   float y = a[1].v * b[1].v;
-  return {Val{1.0f}, From(y, {a[1], b[1]}, DotBound(y, &a[1], &b[1], 1, nullptr)), a[2], b[3]};
+  return {Val{1.0f},
+          UndefinedIfZeroProduct(c, ZeroTimesNonFinite(a[1].v, b[1].v),
+                                 From(y, {a[1], b[1]}, DotBound(y, &a[1], &b[1], 1, nullptr))),
+          a[2], b[3]};
 }
 
 // EX2: Approx2ToX(tmp), replicated.
@@ -415,19 +443,30 @@ Reg OpLRP(OpContext& c) {
     float err = CornerBound<3>(
         v, {a, b, d}, [](const D3& t) { return t[0] * t[1] + (1.0 - t[0]) * t[2]; }, magnitude, 0.0,
         0.0, /*reformulated=*/true);
-    r[i] = From(v, {a, b, d}, err);
+    r[i] = UndefinedIfZeroProduct(
+        c, ZeroTimesNonFinite(a.v, b.v) || ZeroTimesNonFinite(1.0f - a.v, d.v),
+        From(v, {a, b, d}, err));
     if (std::isinf(a.v) || std::isinf(b.v) || std::isinf(d.v)) r[i].dev |= kDevLrpInfinite;
+  }
+  return r;
+}
+
+// Tags the components of a product's result `r` whose factors are 0 and a non-finite value.
+Reg UndefinedIfZeroProducts(const OpContext& c, Reg r) {
+  for (size_t i = 0; i < 4; ++i) {
+    r[i] = UndefinedIfZeroProduct(c, ZeroTimesNonFinite(c.src[0][i].v, c.src[1][i].v), r[i]);
   }
   return r;
 }
 
 // MAD: tmp0 * tmp1 + tmp2
 Reg OpMAD(OpContext& c) {
-  return Map3(
-      c, [](float a, float b, float d) { return a * b + d; },
-      [](const D3& x) { return x[0] * x[1] + x[2]; },
-      [](float a, float b, float d, float v) { return Abs(a) * Abs(b) + Abs(d) + Abs(v); },
-      /*arithmetic=*/true);
+  return UndefinedIfZeroProducts(
+      c, Map3(
+             c, [](float a, float b, float d) { return a * b + d; },
+             [](const D3& x) { return x[0] * x[1] + x[2]; },
+             [](float a, float b, float d, float v) { return Abs(a) * Abs(b) + Abs(d) + Abs(v); },
+             /*arithmetic=*/true));
 }
 
 // MAX and MIN as the specs write them; where that gives NaN from one NaN operand, Mesa's
@@ -463,9 +502,10 @@ Reg OpMOV(OpContext& c) { return c.src[0]; }
 
 // MUL: tmp0 * tmp1
 Reg OpMUL(OpContext& c) {
-  return Map2(
-      c, [](float a, float b) { return a * b; }, [](const D2& x) { return x[0] * x[1]; }, kOwn2,
-      /*arithmetic=*/true);
+  return UndefinedIfZeroProducts(
+      c, Map2(
+             c, [](float a, float b) { return a * b; }, [](const D2& x) { return x[0] * x[1]; },
+             kOwn2, /*arithmetic=*/true));
 }
 
 // POW: ApproxPower(tmp0, tmp1) = ApproxExp2(tmp1 * ApproxLog2(tmp0)), replicated. A negative
@@ -546,11 +586,20 @@ Reg OpSCS(OpContext& c) {
   return r;
 }
 
+// SGE and SLT compare as the pseudo-code does: a NaN operand makes the comparison false, 0.
+// Mesa's GLSL path may fold such a comparison with another one (a known deviation).
+Reg NanComparesFalse(const OpContext& c, Reg r) {
+  for (size_t i = 0; i < 4; ++i) {
+    if (std::isnan(c.src[0][i].v) || std::isnan(c.src[1][i].v)) r[i].dev |= kDevNanCompareFolded;
+  }
+  return r;
+}
+
 // SGE: tmp0 >= tmp1 ? 1 : 0
 Reg OpSGE(OpContext& c) {
-  return Map2(
-      c, [](float a, float b) { return a >= b ? 1.0f : 0.0f; },
-      [](const D2& x) { return x[0] >= x[1] ? 1.0 : 0.0; }, kOwn2);
+  return NanComparesFalse(c, Map2(
+                                 c, [](float a, float b) { return a >= b ? 1.0f : 0.0f; },
+                                 [](const D2& x) { return x[0] >= x[1] ? 1.0 : 0.0; }, kOwn2));
 }
 
 // SIN: ApproxSine(tmp), any angle.
@@ -562,9 +611,9 @@ Reg OpSIN(OpContext& c) {
 
 // SLT: tmp0 < tmp1 ? 1 : 0
 Reg OpSLT(OpContext& c) {
-  return Map2(
-      c, [](float a, float b) { return a < b ? 1.0f : 0.0f; },
-      [](const D2& x) { return x[0] < x[1] ? 1.0 : 0.0; }, kOwn2);
+  return NanComparesFalse(c, Map2(
+                                 c, [](float a, float b) { return a < b ? 1.0f : 0.0f; },
+                                 [](const D2& x) { return x[0] < x[1] ? 1.0 : 0.0; }, kOwn2));
 }
 
 // SUB: tmp0 - tmp1
@@ -579,19 +628,21 @@ Reg OpSUB(OpContext& c) {
 Reg OpSWZ(OpContext& c) { return c.src[0]; }
 
 // XPD: the cross product of tmp0.xyz and tmp1.xyz; w undefined.
-Val CrossComponent(const Reg& a, const Reg& b, size_t i, size_t j) {
+Val CrossComponent(const OpContext& c, size_t i, size_t j) {
+  const Reg& a = c.src[0];
+  const Reg& b = c.src[1];
   float v = a[i].v * b[j].v - a[j].v * b[i].v;
   std::array<Val, 2> left{a[i], a[j]};
   Val nb = b[i];
   nb.v = -nb.v;
   std::array<Val, 2> right{b[j], nb};
-  return From(v, {a[i], a[j], b[i], b[j]}, DotBound(v, left.data(), right.data(), 2, nullptr));
+  return UndefinedIfZeroProduct(
+      c, ZeroTimesNonFinite(a[i].v, b[j].v) || ZeroTimesNonFinite(a[j].v, b[i].v),
+      From(v, {a[i], a[j], b[i], b[j]}, DotBound(v, left.data(), right.data(), 2, nullptr)));
 }
 
 Reg OpXPD(OpContext& c) {
-  const Reg& a = c.src[0];
-  const Reg& b = c.src[1];
-  return {CrossComponent(a, b, 1, 2), CrossComponent(a, b, 2, 0), CrossComponent(a, b, 0, 1),
+  return {CrossComponent(c, 1, 2), CrossComponent(c, 2, 0), CrossComponent(c, 0, 1),
           Val{0.0f, c.Undefined("XPD w")}};
 }
 

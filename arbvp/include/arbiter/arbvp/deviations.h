@@ -19,6 +19,7 @@ enum Deviation : uint32_t {
   kDevCubeEdgeLlvmpipe = 1u << 5,      // a linear cube lookup across a face edge: llvmpipe's
                                        // seamless filtering
   kDevMirrorCentreSoftpipe = 1u << 6,  // a linear mirrored lookup at a texel centre: softpipe
+  kDevNanCompareFolded = 1u << 7,      // SGE/SLT of a NaN: the GLSL compiler's folded compare
 };
 
 struct DeviationInfo {
