@@ -360,6 +360,21 @@ TEST(ToleranceUnstable, InexactValuesNearFloatOverflowAreUnstable) {
   EXPECT_EQ(Vp("MOV o, 1e38;\n").tolerance[0], 0.0f);
 }
 
+TEST(ToleranceUnstable, OverflowOfFiniteTermsIsUnstable) {
+  // 3e38 * 2 overflows to inf; a compiler that reassociates (3e38 * 2) * 0.25 as
+  // 3e38 * (2 * 0.25) gives 1.5e38 (measured on Mesa, both engines): not comparable.
+  OutputRegister product = Vp("MUL o, v.x, 2;\n", {3e38f, 0.0f, 0.0f, 1.0f});
+  EXPECT_EQ(product.value[0], kInf);
+  EXPECT_EQ(product.tolerance[0], kInf);
+  OutputRegister dot = Vp("DP3 o, v, v;\n", {3e38f, 0.0f, 0.0f, 1.0f});
+  EXPECT_EQ(dot.value[0], kInf);
+  EXPECT_EQ(dot.tolerance[0], kInf);
+  // An infinite operand gives an infinity in any order: exact.
+  OutputRegister infinite = Vp("MUL o, v.x, 2;\n", {kInf, 0.0f, 0.0f, 1.0f});
+  EXPECT_EQ(infinite.value[0], kInf);
+  EXPECT_EQ(infinite.tolerance[0], 0.0f);
+}
+
 // ---- denormals ---------------------------------------------------------------------------
 
 TEST(ToleranceDenormal, DenormalInputMayBeFlushed) {
@@ -531,6 +546,22 @@ TEST(ToleranceDeviation, ComparisonOfNanIsFoldedOnTheGlslPathOnly) {
   EXPECT_TRUE(ApplicableDeviations("mesa-glsl", "softpipe") & kDevNanCompareFolded);
   EXPECT_TRUE(ApplicableDeviations("mesa-glsl", "llvmpipe") & kDevNanCompareFolded);
   EXPECT_FALSE(ApplicableDeviations("mesa-arb", "softpipe") & kDevNanCompareFolded);
+}
+
+TEST(ToleranceDeviation, NanMadeOfInfinities) {
+  // t = -inf * 3; MAD t * -inf + t: inf + -inf = NaN by IEEE; Mesa factors it as
+  // t * (-inf + 1) = inf (`arbiter exec --engine all`, both engines and drivers), so the NaN
+  // depends on nan-from-infinities.
+  OutputRegister mad = Vp("MUL t, v.x, v.y;\nMAD o, t, v.x, t;\n", {-kInf, 3.0f, 0.0f, 1.0f});
+  EXPECT_TRUE(std::isnan(mad.value[0]));
+  EXPECT_TRUE(mad.deviations[0] & kDevNanFromInfinities);
+  // A NaN operand's NaN is not made of infinities; an infinite result is not a NaN.
+  OutputRegister nan = Vp("ADD o, v.x, v.y;\n", {kNan, kInf, 0.0f, 1.0f});
+  EXPECT_FALSE(nan.deviations[0] & kDevNanFromInfinities);
+  OutputRegister sum = Vp("ADD o, v.x, v.x;\n", {kInf, 0.0f, 0.0f, 1.0f});
+  EXPECT_FALSE(sum.deviations[0] & kDevNanFromInfinities);
+  EXPECT_TRUE(ApplicableDeviations("mesa-arb", "softpipe") & kDevNanFromInfinities);
+  EXPECT_TRUE(ApplicableDeviations("mesa-glsl", "softpipe") & kDevNanFromInfinities);
 }
 
 TEST(ToleranceDeviation, LitZeroPowZeroOnZOnly) {

@@ -31,6 +31,10 @@ const std::vector<DeviationInfo>& KnownDeviations() {
        "compiler folds a product of two comparisons sharing an operand, (a >= b) * (a >= c), "
        "into one comparison with max or min, a >= max(b, c), whose maxNum drops the NaN, so "
        "the product takes the other comparison's result"},
+      {kDevNanFromInfinities, "nan-from-infinities", true, true, "",
+       "a NaN that IEEE arithmetic makes of infinities (inf - inf): Mesa's compilers use "
+       "identities that hold for finite numbers only (x - x = 0 in XPD of a vector with "
+       "itself, a * b + a = a * (b + 1)) and give 0 or an infinity"},
   };
   return kTable;
 }

@@ -74,13 +74,19 @@ class Reasons {
 };
 
 // A result component computed from `deps`: undefined with the first undefined one's reason,
-// depending on all their deviations. The error bound is the caller's (tolerance.h).
+// depending on all their deviations, and on kDevNanFromInfinities when it is a NaN made of
+// infinities (inf - inf). The error bound is the caller's (tolerance.h).
 inline Val From(float v, std::initializer_list<Val> deps, float err = 0.0f) {
   Val r{v, kDefined, err, std::isfinite(v) ? 0u : kDevNonFiniteLlvmpipe};
+  bool nan_operand = false;
+  bool infinite_operand = false;
   for (const Val& d : deps) {
     if (r.why == kDefined) r.why = d.why;
     r.dev |= d.dev;
+    nan_operand = nan_operand || std::isnan(d.v);
+    infinite_operand = infinite_operand || std::isinf(d.v);
   }
+  if (std::isnan(v) && infinite_operand && !nan_operand) r.dev |= kDevNanFromInfinities;
   return r;
 }
 

@@ -14,7 +14,9 @@ float RoundUp(double e) {
 
 float Spread::Bound(double magnitude, double rel, double abs, bool reformulated) const {
   if (bad_) return kUnstable;
-  if (!std::isfinite(v_)) return 0.0f;
+  // An infinity that finite terms overflowed to: a compiler that reassociates ((a*b)*c as
+  // a*(b*c)) may stay finite, as within a factor of 8 of overflow below.
+  if (!std::isfinite(v_)) return overflow_ && reformulated ? kUnstable : 0.0f;
   double v = std::fabs(static_cast<double>(v_));
   double e = spread_;
   if (spread_ > 0.0 || reformulated) {

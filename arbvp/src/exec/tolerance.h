@@ -47,6 +47,7 @@ class Spread {
       bool same = std::signbit(c) == std::signbit(v_) &&
                   std::fabs(c) > Wide(std::numeric_limits<float>::max());
       bad_ = bad_ || !same;
+      overflow_ = overflow_ || std::isfinite(c);
     } else if (!std::isfinite(c) || std::fabs(c) > Wide(std::numeric_limits<float>::max())) {
       bad_ = true;
     } else {
@@ -62,7 +63,8 @@ class Spread {
   bool exact() const { return !bad_ && spread_ == 0.0; }
   // The bound: the spread, the rounding of `magnitude` when not exact, the approximation
   // allowance (relative `rel` of |v| plus `abs`), the flush of a denormal, and +inf where
-  // the box is unstable or reaches float overflow. Non-finite values are exact or unstable.
+  // the box is unstable or reaches float overflow. Non-finite values are exact or unstable
+  // (an overflow of a reformulated one: another order of its terms may stay finite).
   // `reformulated`: implementations evaluate the operation by another formula or order
   // (dot products, LRP as mix), so even an exact result gets the rounding allowance.
   float Bound(double magnitude, double rel = 0.0, double abs = 0.0,
@@ -73,6 +75,7 @@ class Spread {
   double spread_ = 0.0;
   double largest_ = 0.0;
   bool bad_ = false;
+  bool overflow_ = false;  // v is an infinity that finite values overflowed to
 };
 
 // The bound of the float result `v` of the real function `f` of `in` (monotone in each

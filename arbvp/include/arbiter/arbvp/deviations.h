@@ -20,6 +20,7 @@ enum Deviation : uint32_t {
                                        // seamless filtering
   kDevMirrorCentreSoftpipe = 1u << 6,  // a linear mirrored lookup at a texel centre: softpipe
   kDevNanCompareFolded = 1u << 7,      // SGE/SLT of a NaN: the GLSL compiler's folded compare
+  kDevNanFromInfinities = 1u << 8,     // inf - inf: Mesa's finite-number identities avoid it
 };
 
 struct DeviationInfo {
