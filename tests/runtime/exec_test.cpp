@@ -62,19 +62,20 @@ class ExecTest : public ::testing::Test {
     return results;
   }
 
-  // A fragment program alone on both Mesa engines: the ARB program and its translation.
+  // A program alone on both Mesa engines: the ARB program and its translation.
   struct BothEngines {
     std::vector<arbvp::VectorResult> arb;
     std::vector<arbvp::VectorResult> glsl;
   };
-  BothEngines RunFragmentOnBoth(const std::string& fp, const arbvp::ExecInputs& inputs) {
+  BothEngines RunOnBoth(const std::string& text, const arbvp::ExecInputs& inputs) {
     BothEngines r;
-    std::unique_ptr<arbvp::Program> f = Parse(fp);
-    if (f == nullptr) return r;
+    std::unique_ptr<arbvp::Program> p = Parse(text);
+    if (p == nullptr) return r;
+    const bool vertex = text.rfind("!!ARBvp", 0) == 0;
+    const ArbPrograms programs{vertex ? p.get() : nullptr, vertex ? nullptr : p.get()};
     std::string error;
-    EXPECT_TRUE(executor_->Run({nullptr, f.get()}, inputs, &r.arb, &error)) << error;
-    EXPECT_TRUE(
-        executor_->RunTranslated({nullptr, f.get()}, arbvp::EmitOptions{}, inputs, &r.glsl, &error))
+    EXPECT_TRUE(executor_->Run(programs, inputs, &r.arb, &error)) << error;
+    EXPECT_TRUE(executor_->RunTranslated(programs, arbvp::EmitOptions{}, inputs, &r.glsl, &error))
         << error;
     EXPECT_EQ(r.arb.size(), inputs.vectors.size());
     EXPECT_EQ(r.glsl.size(), inputs.vectors.size());
@@ -840,7 +841,7 @@ TEST_F(ExecTest, ImageUnitsPastTheCoordinateSets) {
   in.vectors[0].fragment.texcoord[0] = {0.75f, 0.75f, 0, 1};  // 2D 2x2: texel (1, 1) = 3
   in.vectors[0].fragment.texcoord[1] = {0.6f, 0, 0, 1};       // 1D 4: texel 2
   in.vectors[0].fragment.texcoord[2] = {0.25f, 0.5f, 0, 1};   // 2D 2x1: texel 0
-  BothEngines both = RunFragmentOnBoth(
+  BothEngines both = RunOnBoth(
       "!!ARBfp1.0\nOPTION ARB_draw_buffers;\n"
       "TEX result.color[0], fragment.texcoord[0], texture[8], 2D;\n"
       "TEX result.color[1], fragment.texcoord[1], texture[15], 1D;\n"
@@ -1081,7 +1082,7 @@ TEST_F(ExecTest, ProductOfComparisonsWithANan) {
   arbvp::ExecInputs in = Inputs(1);
   in.vectors[0].fragment.color = {std::numeric_limits<float>::quiet_NaN(), -1.0f, 127.5f, -0.5f};
   in.vectors[0].fragment.texcoord[0] = {2.0f, 3.0f, 4.0f, 5.0f};
-  BothEngines both = RunFragmentOnBoth(
+  BothEngines both = RunOnBoth(
       "!!ARBfp1.0\nTEMP r0, r1;\n"
       "SGE r0, fragment.color, fragment.color.yzxw;\n"
       "SGE r1, fragment.color, fragment.color.zxyw;\n"
@@ -1096,12 +1097,30 @@ TEST_F(ExecTest, ProductOfComparisonsWithANan) {
   EXPECT_TRUE(Value(both.arb[0], "result.color", {0.0f, 0.0f, Llvmpipe() ? 4.0f : 0.0f, 5.0f}));
   EXPECT_TRUE(Value(both.glsl[0], "result.color", {0.0f, 0.0f, 4.0f, 5.0f}));
   // One comparison alone is not folded: the spec's (0, 0, 0, 1) on both engines and drivers.
-  BothEngines one = RunFragmentOnBoth(
-      "!!ARBfp1.0\nSGE result.color, fragment.color, fragment.color.yzxw;\nEND\n", in);
+  BothEngines one =
+      RunOnBoth("!!ARBfp1.0\nSGE result.color, fragment.color, fragment.color.yzxw;\nEND\n", in);
   ASSERT_EQ(one.arb.size(), 1u);
   ASSERT_EQ(one.glsl.size(), 1u);
   EXPECT_TRUE(Value(one.arb[0], "result.color", {0.0f, 0.0f, 0.0f, 1.0f}));
   EXPECT_TRUE(Value(one.glsl[0], "result.color", {0.0f, 0.0f, 0.0f, 1.0f}));
+}
+
+// MUL t, v.x, v.y; MAD o, t, v.x, t of v = (-inf, 3): (-inf)(-inf) + (-inf) = inf + -inf =
+// NaN by the pseudo-code (ARBvp 2.14.5.15); Mesa factors t * v.x + t as t * (v.x + 1) = inf
+// on both engines (deviation nan-from-infinities, mesa-deviations.md).
+TEST_F(ExecTest, NanMadeOfInfinitiesIsFactoredAway) {
+  arbvp::ExecInputs in = Inputs(1);
+  in.vectors[0].vertex.generic[1] = {-std::numeric_limits<float>::infinity(), 3.0f, 0.0f, 1.0f};
+  BothEngines both = RunOnBoth(
+      "!!ARBvp1.0\nTEMP t;\nMUL t, vertex.attrib[1].x, vertex.attrib[1].y;\n"
+      "MAD result.texcoord[0], t, vertex.attrib[1].x, t;\n"
+      "MOV result.position, vertex.position;\nEND\n",
+      in);
+  ASSERT_EQ(both.arb.size(), 1u);
+  ASSERT_EQ(both.glsl.size(), 1u);
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_TRUE(Value(both.arb[0], "result.texcoord[0]", {inf, inf, inf, inf}));
+  EXPECT_TRUE(Value(both.glsl[0], "result.texcoord[0]", {inf, inf, inf, inf}));
 }
 
 TEST_F(ExecTest, LitZeroToTheZero) {
