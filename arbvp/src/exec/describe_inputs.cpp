@@ -70,22 +70,6 @@ Vec4 FragmentAttribValue(const Binding& b, const FragmentInput& in, size_t index
   return {0.0f, 0.0f, 0.0f, 1.0f};
 }
 
-std::string_view DimName(TexDim dim) {
-  switch (dim) {
-    case TexDim::Tex1D:
-      return "1D";
-    case TexDim::Tex2D:
-      return "2D";
-    case TexDim::Tex3D:
-      return "3D";
-    case TexDim::Cube:
-      return "CUBE";
-    case TexDim::Rect:
-      return "RECT";
-  }
-  return "?";
-}
-
 std::string_view WrapName(TexWrap wrap) {
   switch (wrap) {
     case TexWrap::Repeat:
@@ -123,7 +107,7 @@ std::string DescribeTexture(const Texture& t) {
   if (t.dim != TexDim::Tex1D) size += fmt::format("x{}", t.height);
   if (t.dim == TexDim::Tex3D) size += fmt::format("x{}", t.depth);
   std::string text =
-      fmt::format("{} {} {} {}", DimName(t.dim), size,
+      fmt::format("{} {} {} {}", TexDimName(t.dim), size,
                   t.filter == TexFilter::Linear ? "linear" : "nearest", WrapName(t.wrap));
   if (t.depth_texture) {
     text += " depth";

@@ -2,6 +2,7 @@
 // texture objects.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <utility>
@@ -12,17 +13,13 @@
 namespace arbiter::arbvp {
 namespace {
 
+// Any case: the ARB spelling (2D, CUBE, RECT) as the lower-case one.
 bool ParseDim(std::string_view s, TexDim* dim) {
-  static const std::pair<std::string_view, TexDim> kDims[] = {{"1d", TexDim::Tex1D},
-                                                              {"2d", TexDim::Tex2D},
-                                                              {"3d", TexDim::Tex3D},
-                                                              {"cube", TexDim::Cube},
-                                                              {"rect", TexDim::Rect}};
-  // Any case: the ARB spelling (2D, CUBE, RECT) as the lower-case one.
-  std::string lower(s);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const auto& [name, d] : kDims) {
-    if (lower == name) {
+  for (TexDim d : {TexDim::Tex1D, TexDim::Tex2D, TexDim::Tex3D, TexDim::Cube, TexDim::Rect}) {
+    std::string_view name = TexDimName(d);
+    if (s.size() == name.size() && std::equal(s.begin(), s.end(), name.begin(), [](char a, char b) {
+          return std::toupper(static_cast<unsigned char>(a)) == b;
+        })) {
       *dim = d;
       return true;
     }

@@ -10,22 +10,6 @@
 namespace arbiter::arbvp {
 namespace {
 
-std::string_view DimName(TexDim dim) {
-  switch (dim) {
-    case TexDim::Tex1D:
-      return "1D";
-    case TexDim::Tex2D:
-      return "2D";
-    case TexDim::Tex3D:
-      return "3D";
-    case TexDim::Cube:
-      return "CUBE";
-    case TexDim::Rect:
-      return "RECT";
-  }
-  return "2D";
-}
-
 // One spelling per input: "vertex.texcoord" is texcoord[0] and "fragment.color" the primary
 // colour, as the ARB grammar reads them.
 std::string Canonical(std::string name) {
@@ -108,7 +92,7 @@ std::vector<std::string> UnusedInputWarnings(const std::vector<const Program*>& 
       warnings.push_back(fmt::format(
           "texture unit {}: a {} texture, but the program samples it as {}: it reads GL's "
           "incomplete texture",
-          unit, DimName(texture.dim), DimName(*sampled->second.begin())));
+          unit, TexDimName(texture.dim), TexDimName(*sampled->second.begin())));
     }
   }
   for (const auto& [unit, dims] : reads.units) {
@@ -116,7 +100,7 @@ std::vector<std::string> UnusedInputWarnings(const std::vector<const Program*>& 
       warnings.push_back(fmt::format(
           "texture unit {} is sampled ({}) but given no texture (--texture {}={}:checker): it "
           "reads GL's incomplete texture",
-          unit, DimName(*dims.begin()), unit, DimName(*dims.begin())));
+          unit, TexDimName(*dims.begin()), unit, TexDimName(*dims.begin())));
     }
   }
   return warnings;

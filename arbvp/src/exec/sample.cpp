@@ -230,6 +230,22 @@ Vec4 DepthToRgba(float r, DepthMode mode) {
 
 namespace arbiter::arbvp {
 
+std::string_view TexDimName(TexDim dim) {
+  switch (dim) {
+    case TexDim::Tex1D:
+      return "1D";
+    case TexDim::Tex2D:
+      return "2D";
+    case TexDim::Tex3D:
+      return "3D";
+    case TexDim::Cube:
+      return "CUBE";
+    case TexDim::Rect:
+      return "RECT";
+  }
+  return "?";
+}
+
 TexDim TargetDim(TexTarget target) {
   switch (target) {
     case TexTarget::Tex1D:

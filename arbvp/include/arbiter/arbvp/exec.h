@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "arbiter/arbvp/ir.h"
@@ -106,6 +107,8 @@ enum class TexDim : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Rect };
 // The dimension of texture a sampling target reads (SHADOW2D reads a 2D texture), and whether
 // the target compares depths.
 TexDim TargetDim(TexTarget target);
+// The ARB spelling of a texture's dimension: "1D", "2D", "3D", "CUBE", "RECT".
+std::string_view TexDimName(TexDim dim);
 bool IsShadowTarget(TexTarget target);
 enum class TexFilter : uint8_t { Nearest, Linear };
 enum class TexWrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
