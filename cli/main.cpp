@@ -36,12 +36,17 @@ std::optional<int> HandleCommandWord(CLI::App& app, int argc, char** argv) {
   for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
   if (std::find(names.begin(), names.end(), word) != names.end()) return std::nullopt;
   if (word == "help") {
-    const CLI::App* topic = nullptr;
-    for (const CLI::App* sub : app.get_subcommands({})) {
-      if (argc > 2 && sub->get_name() == argv[2]) topic = sub;
+    if (argc == 2) {
+      std::fputs(app.help().c_str(), stdout);
+      return 0;
     }
-    std::fputs(topic != nullptr ? topic->help("arbiter").c_str() : app.help().c_str(), stdout);
-    return 0;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      if (sub->get_name() == argv[2]) {
+        std::fputs(sub->help("arbiter").c_str(), stdout);
+        return 0;
+      }
+    }
+    word = argv[2];  // help about a command that does not exist
   }
   const std::string nearest =
       compiler::ClosestMatch(word, std::vector<std::string_view>(names.begin(), names.end()));

@@ -121,6 +121,9 @@ with tempfile.TemporaryDirectory() as tmp:
     p = run(["help", "translate"], tmp)
     expect("arbiter help COMMAND", p.returncode == 0 and "Usage: arbiter translate" in p.stdout,
            p.stdout[:200])
+    p = run(["help", "trnslate"], tmp)
+    expect("arbiter help of an unknown command",
+           p.returncode == 2 and "did you mean 'translate'" in p.stderr, p.stderr)
     p = run(["-V"], tmp)
     expect("arbiter -V prints the version", p.returncode == 0 and p.stdout.strip()[0].isdigit(),
            p.stdout + p.stderr)
