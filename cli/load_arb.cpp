@@ -39,9 +39,8 @@ Exit LoadArbPrograms(const CommonOptions& options, std::string_view command,
       check.profile = profile ? &*profile : nullptr;
       l.checked = arbvp::CheckProgram(*l.source, check, &sink);
       if (options.werror) sink.PromoteWarnings();
-      if (!l.checked.ok || !l.checked.program || sink.error_count() > 0) {
-        exit = Worse(exit, Exit::Rejected);
-      }
+      l.rejected = !l.checked.ok || !l.checked.program || sink.error_count() > 0;
+      if (l.rejected) exit = Worse(exit, Exit::Rejected);
       report.diagnostics = std::move(sink.diagnostics());
       report.dropped_errors = sink.dropped();
       const std::string_view text = l.source->text();

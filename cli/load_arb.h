@@ -16,7 +16,8 @@ struct LoadedArb {
   Input input;
   std::unique_ptr<compiler::SourceFile> source;
   arbvp::CheckResult checked;
-  bool ok() const { return source && checked.ok && checked.program; }
+  bool rejected = false;  // an error, a warning under -Werror among them
+  bool ok() const { return source && checked.ok && checked.program && !rejected; }
 };
 
 // Reads and checks every file of options.files (--stage, --limits, -Werror, --error-limit

@@ -73,6 +73,16 @@ with tempfile.TemporaryDirectory() as tmp:
     expect("translate DIR: the rejected one is reported",
            "c.fp:2:28: error" in p.stderr and "1 of 3 programs rejected" in p.stderr, p.stderr)
 
+    # 3, with -Werror: a program with a warning is rejected, and not translated.
+    put("warn/a.vp", VP)
+    put("warn/w.fp", "!!ARBfp1.0\nOPTION ARB_fog_linear;\nOPTION ARB_fog_linear;\n"
+        "MOV result.color, fragment.color;\nEND\n")
+    p = run(["translate", "-W", "warn", "-o", "warn-out"], tmp)
+    written = sorted(os.listdir(f"{tmp}/warn-out")) if os.path.isdir(f"{tmp}/warn-out") else []
+    expect("translate -W: a warned program is rejected and not written",
+           p.returncode == 1 and written == ["a.vert"] and "1 of 2 programs rejected" in p.stderr,
+           f"{written} {p.stderr}")
+
     # 9: several programs without -o.
     p = run(["translate", "dir/a.vp", "dir/b.fp"], tmp)
     expect("translate a.vp b.fp without -o: usage error", p.returncode == 2 and p.stdout == "",
