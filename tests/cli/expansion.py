@@ -10,18 +10,10 @@ import subprocess
 import sys
 import tempfile
 
+from expectations import expect, finish
+
 binary, corpus = os.path.abspath(sys.argv[1]), sys.argv[2]
 program = open(os.path.join(corpus, "arb", "valid", "opcode-abs.fp"), "rb").read()
-failed = passed = 0
-
-
-def expect(what, ok, detail=""):
-    global failed, passed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL {what}" + (f": {detail}" if detail else ""))
 
 
 def checked(args, cwd):
@@ -92,5 +84,4 @@ with tempfile.TemporaryDirectory() as tmp:
                f"exit {code}")
     shutil.rmtree(os.path.join(tmp, "many"))
 
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+finish()

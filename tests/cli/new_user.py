@@ -15,8 +15,9 @@ import subprocess
 import sys
 import tempfile
 
+from expectations import expect, finish
+
 binary = os.path.abspath(sys.argv[1])
-failed = passed = 0
 
 VP = "!!ARBvp1.0\nMOV result.position, vertex.position;\nEND\n"
 VP_INLINE = ("!!ARBvp1.0\nTEMP t;\nMOV t, vertex.position;\nADD t, t, vertex.position;\n"
@@ -24,15 +25,6 @@ VP_INLINE = ("!!ARBvp1.0\nTEMP t;\nMOV t, vertex.position;\nADD t, t, vertex.pos
 FP = "!!ARBfp1.0\nMOV result.color, fragment.color;\nEND\n"
 BAD_FP = "!!ARBfp1.0\nMOV result.color, fragment.colour;\nEND\n"
 FRAG = "#version 110\nvoid main() { gl_FragColor = vec4(1.0); }\n"
-
-
-def expect(what, ok, detail=""):
-    global failed, passed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL {what}" + (f": {detail}" if detail else ""))
 
 
 def run(args, cwd):
@@ -178,5 +170,4 @@ with tempfile.TemporaryDirectory() as tmp:
         expect(f"run {name}: fails", p.returncode == 1 and "FAIL" in p.stdout,
                p.stdout + p.stderr)
 
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+finish()
