@@ -87,8 +87,8 @@ int SourceCount(OpSignature signature) {
 
 const std::vector<OptionInfo>& AllOptions() {
   static const std::vector<OptionInfo> table = {
-#define ARBVP_OPTION(name, spelling, stages, group, spec) \
-  OptionInfo{OptionId::name, spelling, OpStages::stages, group, spec},
+#define ARBVP_OPTION(name, spelling, stages, group, same_as, spec) \
+  OptionInfo{OptionId::name, spelling, OpStages::stages, group, OptionId::same_as, spec},
 #include "arbiter/arbvp/options.def"
 #undef ARBVP_OPTION
   };
@@ -109,7 +109,7 @@ bool LookupOption(std::string_view spelling, OptionId* id) {
 
 bool Program::HasOption(OptionId id) const {
   for (const Option& option : options) {
-    if (option.id == id) return true;
+    if (option.id == id || GetOptionInfo(option.id).same_as == id) return true;
   }
   return false;
 }

@@ -1001,6 +1001,33 @@ void FogAndOutputCases(Table& t) {
           in.vectors[65].fragment.depth = 0.25f;
         },
         {At(0, Eq(kColor, {0.5f, 0.5f, 0.5f, 1})), At(65, Eq(kColor, {1.5f, 1.5f, 0.25f, 1}))});
+  // ARB_fragment_coord_conventions 3.11.4.5.3 on a framebuffer of two rows: the upper-left
+  // origin counts rows from the top (y = 2 - window y), an integer centre drops the half.
+  auto two_rows = [](ExecInputs& in) {
+    in.vectors.resize(66);
+    in.vectors[65].fragment.depth = 0.25f;
+  };
+  t.Add("fragment_position_upper_left", "ARB_fragment_coord_origin_upper_left", "",
+        Fp("OPTION ARB_fragment_coord_origin_upper_left;\nMOV result.color, fragment.position;\n"),
+        two_rows,
+        {At(0, Eq(kColor, {0.5f, 1.5f, 0.5f, 1})), At(65, Eq(kColor, {1.5f, 0.5f, 0.25f, 1}))});
+  t.Add("fragment_position_integer", "ARB_fragment_coord_pixel_center_integer", "",
+        Fp("OPTION ARB_fragment_coord_pixel_center_integer;\n"
+           "MOV result.color, fragment.position;\n"),
+        two_rows, {At(0, Eq(kColor, {0, 0, 0.5f, 1})), At(65, Eq(kColor, {1, 1, 0.25f, 1}))});
+  t.Add("fragment_position_upper_left_integer", "both fragment coordinate options", "",
+        Fp("OPTION ARB_fragment_coord_pixel_center_integer;\n"
+           "OPTION ARB_fragment_coord_origin_upper_left;\nMOV result.color, fragment.position;\n"),
+        two_rows, {At(0, Eq(kColor, {0, 1, 0.5f, 1})), At(65, Eq(kColor, {1, 0, 0.25f, 1}))});
+  t.Add("ati_draw_buffers", "ATI_draw_buffers: result.color[n] as ARB_draw_buffers", "",
+        Fp("OPTION ATI_draw_buffers;\nMOV result.color[0], fragment.color;\n"
+           "MOV result.color[3], fragment.texcoord[1];\n"),
+        [](ExecInputs& in) {
+          in.vectors[0].fragment.color = {0.25f, 0.5f, 0.75f, 1};
+          in.vectors[0].fragment.texcoord[1] = {4, 3, 2, 1};
+        },
+        {Eq("result.color[0]", {0.25f, 0.5f, 0.75f, 1}), Eq("result.color[3]", {4, 3, 2, 1}),
+         Absent("result.color[1]")});
   t.Add("fragment_fogcoord", "ARBfp table X.1: (f, 0, 0, 1)", "",
         Fp("MOV result.color, fragment.fogcoord;\n"),
         [](ExecInputs& in) { in.vectors[0].fragment.fogcoord = 3; }, {Eq(kColor, {3, 0, 0, 1})});

@@ -77,7 +77,9 @@ void CheckResultBinding(const CheckContext& ctx, const Binding& b) {
       if (!b.indexed) return;
       if (!ctx.program.HasOption(OptionId::DrawBuffers)) {
         ctx.Report(Diag::OptionRequired, b.selector,
-                   fmt::format("'result.color[{}]' needs OPTION ARB_draw_buffers", b.index));
+                   fmt::format("'result.color[{}]' needs OPTION ARB_draw_buffers (or ATI's "
+                               "ATI_draw_buffers)",
+                               b.index));
         return;
       }
       CheckSelector(ctx, b, "arbfp.max_draw_buffers", "draw buffer");

@@ -1,6 +1,7 @@
 // Whole translations: the shader text (header, declarations, helpers, main) and the binding
 // map, for one program or for a vertex + fragment pair.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
@@ -70,6 +71,16 @@ std::string_view PrecisionNote(const Program& p) {
   return "";
 }
 
+// The options of ARB_fragment_coord_conventions are gl_FragCoord's layout qualifiers of the
+// same names (the extension's GLSL section).
+std::string FragCoordLayout(const Program& p) {
+  std::vector<std::string_view> ids;
+  if (p.HasOption(OptionId::OriginUpperLeft)) ids.push_back("origin_upper_left");
+  if (p.HasOption(OptionId::PixelCenterInteger)) ids.push_back("pixel_center_integer");
+  if (ids.empty()) return "";
+  return fmt::format("layout({}) in vec4 gl_FragCoord;\n", fmt::join(ids, ", "));
+}
+
 std::string EmitShader(Context& ctx) {
   const Program& p = ctx.program;
   AssignNames(ctx);
@@ -132,6 +143,8 @@ std::string EmitShader(Context& ctx) {
 
   std::string out = "#version 110\n";
   if (ctx.needs_rect) out += "#extension GL_ARB_texture_rectangle : require\n";
+  const std::string frag_coord = FragCoordLayout(p);
+  if (!frag_coord.empty()) out += "#extension GL_ARB_fragment_coord_conventions : require\n";
   out += fmt::format("// ARB {} program translated to GLSL 1.10 by arbiter.\n",
                      ctx.IsVertex() ? "vertex" : "fragment");
   if (std::string_view hint = PrecisionNote(p); !hint.empty()) {
@@ -141,7 +154,7 @@ std::string EmitShader(Context& ctx) {
     out += "// OPTION ARB_fragment_program_shadow: shadow samplers.\n";
   }
 
-  std::string decls;
+  std::string decls = frag_coord;
   if (ctx.texcoord_declared > 0) {
     decls += fmt::format("varying vec4 gl_TexCoord[{}];\n", ctx.texcoord_declared);
   }

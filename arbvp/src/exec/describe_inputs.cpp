@@ -52,7 +52,8 @@ Vec4 VertexAttribValue(const Binding& b, const VertexInput& in) {
 
 // The value a fragment attribute binding reads in a fragment program run alone (ARBfp
 // table X.1); fragment.position is the vector's pixel centre and its window depth.
-Vec4 FragmentAttribValue(const Binding& b, const FragmentInput& in, size_t index) {
+Vec4 FragmentAttribValue(const Binding& b, const FragmentInput& in, size_t index, size_t count,
+                         FragCoordConvention convention) {
   switch (b.fragment_attrib) {
     case FragmentAttrib::Color:
       return in.color;
@@ -63,8 +64,8 @@ Vec4 FragmentAttribValue(const Binding& b, const FragmentInput& in, size_t index
     case FragmentAttrib::FogCoord:
       return {in.fogcoord, 0.0f, 0.0f, 1.0f};
     case FragmentAttrib::Position: {
-      Pixel p = FragmentPixel(index);
-      return {static_cast<float>(p.x) + 0.5f, static_cast<float>(p.y) + 0.5f, in.depth, 1.0f};
+      const auto [x, y] = FragmentCoordXY(index, count, convention);
+      return {x, y, in.depth, 1.0f};
     }
   }
   return {0.0f, 0.0f, 0.0f, 1.0f};
@@ -164,8 +165,10 @@ std::vector<std::string> DescribeReadInputs(const Program* vertex, const Program
     // A pair's fragment attributes come from the vertex program: not inputs.
     if (p == vertex || !pair) {
       for (const Binding& b : read.attribs) {
-        Vec4 value = p->kind == ProgramKind::Vertex ? VertexAttribValue(b, in.vertex)
-                                                    : FragmentAttribValue(b, in.fragment, index);
+        Vec4 value = p->kind == ProgramKind::Vertex
+                         ? VertexAttribValue(b, in.vertex)
+                         : FragmentAttribValue(b, in.fragment, index, inputs.vectors.size(),
+                                               FragCoordConventionOf(*p));
         lines.insert(fmt::format("{} = {}", BindingName(b, p->kind), FormatVec4(value)));
       }
     }

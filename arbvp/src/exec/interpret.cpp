@@ -71,15 +71,15 @@ struct FragmentSource {
   Reg position{};
 };
 
-FragmentSource FromFragmentInput(const FragmentInput& in, size_t vector_index) {
+FragmentSource FromFragmentInput(const FragmentInput& in, size_t vector_index, size_t count,
+                                 FragCoordConvention convention) {
   FragmentSource f;
   f.color = exec::DefinedReg(in.color);
   f.secondary = exec::DefinedReg(in.secondary_color);
   for (size_t i = 0; i < f.texcoord.size(); ++i) f.texcoord[i] = exec::DefinedReg(in.texcoord[i]);
   f.fogcoord = exec::InputVal(in.fogcoord);
-  Pixel p = FragmentPixel(vector_index);
-  f.position = exec::DefinedReg(
-      {static_cast<float>(p.x) + 0.5f, static_cast<float>(p.y) + 0.5f, in.depth, 1.0f});
+  const auto [x, y] = FragmentCoordXY(vector_index, count, convention);
+  f.position = exec::DefinedReg({x, y, in.depth, 1.0f});
   // The window z goes through the depth range transform and a depth format.
   f.position[2].err = static_cast<float>(exec::kDepthPrecision);
   return f;
@@ -628,7 +628,8 @@ std::vector<VectorResult> Interpret(const Program& program, const ExecInputs& in
   for (size_t i = 0; i < inputs.vectors.size(); ++i) {
     const InputVector& in = inputs.vectors[i];
     Reasons reasons;
-    FragmentSource fragment = FromFragmentInput(in.fragment, i);
+    FragmentSource fragment = FromFragmentInput(in.fragment, i, inputs.vectors.size(),
+                                                FragCoordConventionOf(program));
     results.push_back(RunOne(program, inputs, in, fragment, source, &reasons));
   }
   return results;
@@ -646,7 +647,9 @@ std::vector<VectorResult> InterpretPair(const Program& vertex, const Program& fr
     Run vrun(vertex, inputs, vertex_source, &reasons);
     vrun.Execute(VertexAttribs(vertex, in.vertex));
     const Outputs& vout = vrun.outputs();
-    FragmentSource f = FromFragmentInput(in.fragment, i);  // position: the vector's pixel
+    // position: the vector's pixel
+    FragmentSource f = FromFragmentInput(in.fragment, i, inputs.vectors.size(),
+                                         FragCoordConventionOf(fragment));
     f.color = ClampColor(
         Varying(vout, ResultReg::Color, 0, false, "result.color.front.primary", &reasons));
     f.secondary = ClampColor(

@@ -159,7 +159,8 @@ struct VertexInput {
 
 // Fragment inputs of a fragment program run alone (a pair takes them from the vertex
 // program). fragment.position is not an input: every engine places vector i at the pixel
-// FragmentPixel(i), so fragment.position = (x + 0.5, y + 0.5, depth, 1) with `depth` the
+// FragmentPixel(i), so fragment.position = (x + 0.5, y + 0.5, depth, 1) (other origin and
+// centre under the fragment coordinate options: FragmentCoordXY) with `depth` the
 // window depth below. fragment.fogcoord reads (fogcoord, 0, 0, 1).
 struct FragmentInput {
   Vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
@@ -183,6 +184,31 @@ struct Pixel {
 };
 inline Pixel FragmentPixel(size_t index) {
   return {static_cast<int>(index % kFramebufferWidth), static_cast<int>(index / kFramebufferWidth)};
+}
+// The rows of the framebuffer `count` vectors are drawn to.
+inline int FramebufferHeight(size_t count) {
+  return static_cast<int>((count + kFramebufferWidth - 1) / kFramebufferWidth);
+}
+
+// The fragment coordinate conventions of ARB_fragment_coord_conventions: the origin (lower or
+// upper left of the framebuffer) and the pixel centre (half or whole pixel) that
+// fragment.position's x and y follow.
+struct FragCoordConvention {
+  bool upper_left = false;
+  bool integer_center = false;
+};
+inline FragCoordConvention FragCoordConventionOf(const Program& fragment) {
+  return {fragment.HasOption(OptionId::OriginUpperLeft),
+          fragment.HasOption(OptionId::PixelCenterInteger)};
+}
+
+// fragment.position.xy of vector `index` of `count` under `convention`.
+inline std::array<float, 2> FragmentCoordXY(size_t index, size_t count,
+                                            FragCoordConvention convention) {
+  const Pixel p = FragmentPixel(index);
+  const float offset = convention.integer_center ? 0.0f : 0.5f;
+  const int row = convention.upper_left ? FramebufferHeight(count) - 1 - p.y : p.y;
+  return {static_cast<float>(p.x) + offset, static_cast<float>(row) + offset};
 }
 
 // Everything one run reads. program.env is per target; program.local per program. Indices

@@ -52,7 +52,7 @@ int SourceCount(OpSignature signature);
 // Options (one row each in options.def).
 
 enum class OptionId : uint8_t {
-#define ARBVP_OPTION(name, spelling, stages, group, spec) name,
+#define ARBVP_OPTION(name, spelling, stages, group, same_as, spec) name,
 #include "arbiter/arbvp/options.def"
 #undef ARBVP_OPTION
 };
@@ -62,6 +62,7 @@ struct OptionInfo {
   std::string_view spelling;  // "ARB_position_invariant"
   OpStages stages;
   std::string_view group;  // options of one non-empty group exclude each other ("fog")
+  OptionId same_as;        // the option whose meaning it has (ATI_draw_buffers: DrawBuffers)
   std::string_view spec;
 };
 const OptionInfo& GetOptionInfo(OptionId id);
@@ -243,6 +244,7 @@ struct Program {
   Range header;
   Range end;
 
+  // Whether an option with `id`'s meaning is given (ATI_draw_buffers counts as ARB_draw_buffers).
   bool HasOption(OptionId id) const;
 };
 
