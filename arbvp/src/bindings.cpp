@@ -170,6 +170,8 @@ std::string BindingName(const Binding& b, ProgramKind kind) {
           return "fragment.fogcoord";
         case FragmentAttrib::Position:
           return "fragment.position";
+        case FragmentAttrib::Facing:
+          return "fragment.facing";
       }
       break;
     case BindingKind::Result:
@@ -185,6 +187,8 @@ std::string BindingName(const Binding& b, ProgramKind kind) {
           return "result.pointsize";
         case ResultReg::TexCoord:
           return fmt::format("result.texcoord[{}]", b.index);
+        case ResultReg::ClipDistance:
+          return fmt::format("result.clip[{}]", b.index);
         case ResultReg::FragColor:
           return b.indexed ? fmt::format("result.color[{}]", b.index) : "result.color";
         case ResultReg::FragDepth:
@@ -216,7 +220,8 @@ bool NameHasIndex(const Binding& b) {
     case BindingKind::FragmentAttrib:
       return b.fragment_attrib == FragmentAttrib::TexCoord;
     case BindingKind::Result:
-      return b.result == ResultReg::TexCoord || (b.result == ResultReg::FragColor && b.indexed);
+      return b.result == ResultReg::TexCoord || b.result == ResultReg::ClipDistance ||
+             (b.result == ResultReg::FragColor && b.indexed);
     case BindingKind::ProgramEnv:
     case BindingKind::ProgramLocal:
       return true;

@@ -1407,6 +1407,19 @@ class Parser {
                Expect(Tok::Comma, "',' and a texture unit ('texture[n]')") &&
                ParseTexImageUnit(inst) && Expect(Tok::Comma, "',' and a texture target") &&
                ParseTexTarget(inst);
+      case OpSignature::VecSca:
+      case OpSignature::Ara:
+      case OpSignature::Arr:
+      case OpSignature::PushA:
+      case OpSignature::PopA:
+      case OpSignature::TexD:
+      case OpSignature::Branch:
+      case OpSignature::FlowCc:
+      case OpSignature::If:
+      case OpSignature::Loop:
+      case OpSignature::EndFlow:
+        return Fail(Diag::SyntaxUnknownOpcode, inst->opcode_range,
+                    fmt::format("'{}' is not parsed yet", info.name));
       case OpSignature::Kil:
         inst->src_count = 1;
         if (!ParseSwizzleSrcReg(false, {}, &inst->src[0])) return false;

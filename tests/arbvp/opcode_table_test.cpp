@@ -1,5 +1,6 @@
 // Tests of the opcode table (opcodes.def) against both grammars: stages, operands, _SAT.
 #include <string>
+#include <vector>
 
 #include "check_fixture.h"
 
@@ -37,6 +38,27 @@ std::string Operands(OpSignature signature, const std::string& s) {
     case OpSignature::Sample:
       return " t, " + s + ", texture[0], 2D;";
     case OpSignature::Kil:
+      return " " + s + ";";
+    case OpSignature::VecSca:
+      return " t, " + s + ", " + s + ".x;";
+    case OpSignature::Ara:
+      return " a.xy, a;";
+    case OpSignature::Arr:
+      return " a.x, " + s + ";";
+    case OpSignature::PushA:
+      return " a;";
+    case OpSignature::PopA:
+      return " a;";
+    case OpSignature::TexD:
+      return " t, " + s + ", " + s + ", " + s + ", texture[0], 2D;";
+    case OpSignature::Branch:
+      return " there;";
+    case OpSignature::FlowCc:
+    case OpSignature::EndFlow:
+      return ";";
+    case OpSignature::If:
+      return " GT.x;";
+    case OpSignature::Loop:
       return " " + s + ";";
   }
   return ";";
@@ -143,7 +165,16 @@ std::string PrintOpcode(const testing::TestParamInfo<OpcodeInfo>& param_info) {
   return std::string(param_info.param.name);
 }
 
-INSTANTIATE_TEST_SUITE_P(OpcodesDef, CheckOpcodeRow, testing::ValuesIn(AllOpcodes()), PrintOpcode);
+// The opcodes of the ARB extensions themselves (the NV-only ones are nv_opcode_test's).
+std::vector<OpcodeInfo> ArbOpcodes() {
+  std::vector<OpcodeInfo> out;
+  for (const OpcodeInfo& info : AllOpcodes()) {
+    if (info.vp == OpLevel::Arb || info.fp == OpLevel::Arb) out.push_back(info);
+  }
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(OpcodesDef, CheckOpcodeRow, testing::ValuesIn(ArbOpcodes()), PrintOpcode);
 
 // "There are twenty-seven vertex program instructions" (ARBvp 2.14.4, Table X.5) and
 // "There are 33 fragment program instructions" (ARBfp 3.11.4, Table X.5).
@@ -158,13 +189,36 @@ TEST(OpcodeTable, InstructionCountsMatchTheSpecs) {
   EXPECT_EQ(fp, 33);
 }
 
-// <TexInstruction> ::= <SAMPLE_instruction> | <KIL_instruction>; everything else is ALU.
+// The NV options' instruction counts: "There are forty-two vertex program instructions"
+// (NV_vertex_program2_option), "forty-eight" (NV_vertex_program3), "fifty-two fragment
+// program instructions" (NV_fragment_program_option) and "sixty-seven" (NV_fragment_program2).
+TEST(OpcodeTable, NvInstructionCountsMatchTheSpecs) {
+  int counts[2][3] = {};
+  for (const OpcodeInfo& info : AllOpcodes()) {
+    for (int level = 0; level < 3; ++level) {
+      for (int kind = 0; kind < 2; ++kind) {
+        OpLevel l = kind == 0 ? info.vp : info.fp;
+        if (l != OpLevel::No && static_cast<int>(l) - 1 <= level) ++counts[kind][level];
+      }
+    }
+  }
+  EXPECT_EQ(counts[0][1], 42);
+  EXPECT_EQ(counts[0][2], 48);
+  EXPECT_EQ(counts[1][1], 52);
+  EXPECT_EQ(counts[1][2], 67);
+}
+
+// <TexInstruction> ::= <SAMPLE_instruction> | <KIL_instruction> (and the NV options' TXD,
+// TXL); flow control is its own class; everything else is ALU.
 TEST(OpcodeTable, TexClassIsSampleAndKil) {
   for (const OpcodeInfo& info : AllOpcodes()) {
     SCOPED_TRACE(info.name);
-    bool tex = info.op == Opcode::TEX || info.op == Opcode::TXB || info.op == Opcode::TXP ||
+    bool tex = info.signature == OpSignature::Sample || info.signature == OpSignature::TexD ||
                info.op == Opcode::KIL;
-    EXPECT_EQ(info.klass, tex ? OpClass::Tex : OpClass::Alu);
+    bool flow = info.signature == OpSignature::Branch || info.signature == OpSignature::FlowCc ||
+                info.signature == OpSignature::If || info.signature == OpSignature::Loop ||
+                info.signature == OpSignature::EndFlow;
+    EXPECT_EQ(info.klass, tex ? OpClass::Tex : flow ? OpClass::Flow : OpClass::Alu);
   }
 }
 
@@ -175,6 +229,9 @@ TEST(OpcodeTable, LookupByName) {
   EXPECT_EQ(GetOpcodeInfo(op).name, "DPH");
   EXPECT_FALSE(LookupOpcode("MOV_SAT", &op));  // the suffix is not part of the name
   EXPECT_FALSE(LookupOpcode("mov", &op));
+  ASSERT_TRUE(LookupOpcode("ENDLOOP", &op));
+  EXPECT_EQ(op, Opcode::ENDLOOP);
+  EXPECT_FALSE(LookupOpcode("MOVC", &op));
 }
 
 }  // namespace

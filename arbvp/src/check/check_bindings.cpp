@@ -73,6 +73,9 @@ void CheckResultBinding(const CheckContext& ctx, const Binding& b) {
     case ResultReg::TexCoord:
       CheckSelector(ctx, b, "arbvp.max_texture_units", "texture coordinate set");
       return;
+    case ResultReg::ClipDistance:
+      CheckSelector(ctx, b, "gl.max_clip_planes", "clip plane");
+      return;
     case ResultReg::FragColor:
       if (!b.indexed) return;
       if (!ctx.program.HasOption(OptionId::DrawBuffers)) {

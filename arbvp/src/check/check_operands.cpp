@@ -15,76 +15,27 @@ bool IsPosition(const Binding& b) {
 }
 
 // The operand components (before swizzling) that instruction `inst` reads from source
-// `s`, as the instruction definitions use them (ARBvp 2.14.5, ARBfp 3.11.5 and 3.11.6).
+// `s`: the opcode table's `reads` column (ARBvp 2.14.5, ARBfp 3.11.5 and 3.11.6, the NV
+// options' instruction sections).
 uint8_t OperandComponentsUsed(const Instruction& inst, size_t s) {
-  uint8_t mask = inst.dst.mask;
-  switch (inst.op) {
-    case Opcode::DP3:
-    case Opcode::XPD:
-      return 0x7;
-    case Opcode::DPH:
-      return s == 0 ? 0x7 : 0xF;
-    case Opcode::DP4:
-    case Opcode::KIL:
-      return 0xF;
-    case Opcode::DST:
-      return s == 0 ? 0x6 : 0xA;  // a.y, a.z; b.y, b.w
-    case Opcode::LIT:
-      return 0xB;  // x, y, w
-    case Opcode::TEX:
-    case Opcode::TXP:
-    case Opcode::TXB: {
-      uint8_t coords = 0;
-      switch (inst.target) {
-        case TexTarget::Tex1D:
-          coords = 0x1;
-          break;
-        case TexTarget::Tex2D:
-        case TexTarget::Rect:
-          coords = 0x3;
-          break;
-        case TexTarget::Tex3D:
-        case TexTarget::Cube:
-        case TexTarget::Shadow2D:
-        case TexTarget::ShadowRect:
-          coords = 0x7;
-          break;
-        case TexTarget::Shadow1D:
-          coords = 0x5;
-          break;
-      }
-      return inst.op == Opcode::TEX ? coords : static_cast<uint8_t>(coords | 0x8);
-    }
-    case Opcode::ABS:
-    case Opcode::ADD:
-    case Opcode::CMP:
-    case Opcode::FLR:
-    case Opcode::FRC:
-    case Opcode::LRP:
-    case Opcode::MAD:
-    case Opcode::MAX:
-    case Opcode::MIN:
-    case Opcode::MOV:
-    case Opcode::MUL:
-    case Opcode::SGE:
-    case Opcode::SLT:
-    case Opcode::SUB:
-    case Opcode::SWZ:
-      return mask;  // component-wise: only the written components are computed
-    case Opcode::ARL:
-    case Opcode::COS:
-    case Opcode::EX2:
-    case Opcode::EXP:
-    case Opcode::LG2:
-    case Opcode::LOG:
-    case Opcode::POW:
-    case Opcode::RCP:
-    case Opcode::RSQ:
-    case Opcode::SCS:
-    case Opcode::SIN:
-      return 0x1;  // scalar operands: the swizzle replicates one component
+  std::string_view reads = GetOpcodeInfo(inst.op).reads;
+  for (size_t i = 0; i < s; ++i) {
+    size_t comma = reads.find(',');
+    if (comma == std::string_view::npos) break;
+    reads.remove_prefix(comma + 1);
   }
-  return 0xF;
+  reads = reads.substr(0, reads.find(','));
+  if (reads == "mask") return inst.dst.mask;  // component-wise: only the written ones
+  uint8_t mask = 0;
+  if (reads.starts_with("coord")) {
+    mask = TexTargetCoordMask(inst.target);
+    reads.remove_prefix(5);
+  }
+  for (char c : reads) {
+    if (c >= 'x' && c <= 'z') mask = static_cast<uint8_t>(mask | (1u << (c - 'x')));
+    if (c == 'w') mask = static_cast<uint8_t>(mask | 0x8u);
+  }
+  return mask;
 }
 
 // Components of the source register an operand reads.

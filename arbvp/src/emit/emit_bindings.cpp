@@ -241,6 +241,8 @@ Expr ReadFragmentAttrib(Context& ctx, const Binding& b) {
       return Fields("gl_FogFragCoord", "0.0", "0.0", "1.0");
     case FragmentAttrib::Position:  // (x, y, z, 1/w) in both
       return e("gl_FragCoord");
+    case FragmentAttrib::Facing:  // (+1 front or -1 back, 0, 0, 1)
+      return Fields("(gl_FrontFacing ? 1.0 : -1.0)", "0.0", "0.0", "1.0");
   }
   return e("vec4(0.0)");
 }
@@ -337,6 +339,10 @@ DestTarget ResultTarget(Context& ctx, const Binding& b) {
     case ResultReg::TexCoord:
       ctx.texcoord_size = std::max(ctx.texcoord_size, b.index + 1);
       t.lvalue = fmt::format("gl_TexCoord[{}]", b.index);
+      break;
+    case ResultReg::ClipDistance:
+      // GLSL 1.10 has no clip distances (gl_ClipDistance is 1.30's).
+      t = {fmt::format("arb_clip_distance{}", b.index), 0};
       break;
     case ResultReg::FragColor:
       if (ctx.fog_redirect) {

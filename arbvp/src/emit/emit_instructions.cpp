@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "emit/emit_context.h"
+#include "emit/emit_nv.h"
 
 namespace arbiter::arbvp::emit {
 namespace {
@@ -346,7 +347,7 @@ using EmitFn = std::string (*)(Context&, const Instruction&);
 
 // Indexed by Opcode: one row per opcodes.def row.
 constexpr EmitFn kEmitters[] = {
-#define ARBVP_OPCODE(name, stages, signature, klass, spec) &name,
+#define ARBVP_OPCODE(name, vp, fp, signature, klass, vp_mods, fp_mods, fp2_mods, reads, spec) &name,
 #include "arbiter/arbvp/opcodes.def"
 #undef ARBVP_OPCODE
 };

@@ -63,6 +63,8 @@ Vec4 FragmentAttribValue(const Binding& b, const FragmentInput& in, size_t index
       return Element(in.texcoord, b.index, Vec4{0.0f, 0.0f, 0.0f, 1.0f});
     case FragmentAttrib::FogCoord:
       return {in.fogcoord, 0.0f, 0.0f, 1.0f};
+    case FragmentAttrib::Facing:  // a point is front facing
+      return {1.0f, 0.0f, 0.0f, 1.0f};
     case FragmentAttrib::Position: {
       const auto [x, y] = FragmentCoordXY(index, count, convention);
       return {x, y, in.depth, 1.0f};

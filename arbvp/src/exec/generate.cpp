@@ -157,6 +157,8 @@ void AddField(const Binding& b, Fields* fields) {
         return;
       case FragmentAttrib::Position:
         return;  // the pixel and FragmentInput::depth, set for every vector
+      case FragmentAttrib::Facing:
+        return;  // every engine draws front-facing points
     }
   }
 }

@@ -139,6 +139,8 @@ Reg FragmentAttribValue(const Binding& b, const FragmentSource& f) {
       return {f.fogcoord, Val{0.0f}, Val{0.0f}, Val{1.0f}};
     case FragmentAttrib::Position:
       return f.position;
+    case FragmentAttrib::Facing:  // NV_fragment_program2: +1 for the front-facing points drawn
+      return exec::DefinedReg({1.0f, 0.0f, 0.0f, 1.0f});
   }
   return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
 }
@@ -628,8 +630,8 @@ std::vector<VectorResult> Interpret(const Program& program, const ExecInputs& in
   for (size_t i = 0; i < inputs.vectors.size(); ++i) {
     const InputVector& in = inputs.vectors[i];
     Reasons reasons;
-    FragmentSource fragment = FromFragmentInput(in.fragment, i, inputs.vectors.size(),
-                                                FragCoordConventionOf(program));
+    FragmentSource fragment =
+        FromFragmentInput(in.fragment, i, inputs.vectors.size(), FragCoordConventionOf(program));
     results.push_back(RunOne(program, inputs, in, fragment, source, &reasons));
   }
   return results;
@@ -648,8 +650,8 @@ std::vector<VectorResult> InterpretPair(const Program& vertex, const Program& fr
     vrun.Execute(VertexAttribs(vertex, in.vertex));
     const Outputs& vout = vrun.outputs();
     // position: the vector's pixel
-    FragmentSource f = FromFragmentInput(in.fragment, i, inputs.vectors.size(),
-                                         FragCoordConventionOf(fragment));
+    FragmentSource f =
+        FromFragmentInput(in.fragment, i, inputs.vectors.size(), FragCoordConventionOf(fragment));
     f.color = ClampColor(
         Varying(vout, ResultReg::Color, 0, false, "result.color.front.primary", &reasons));
     f.secondary = ClampColor(

@@ -16,6 +16,7 @@
 #include <numbers>
 
 #include "arbiter/arbvp/deviations.h"
+#include "exec/ops_nv.h"
 #include "exec/sample.h"
 #include "exec/tolerance.h"
 
@@ -790,7 +791,8 @@ using OpFn = Reg (*)(OpContext&);
 
 // Indexed by Opcode: one row per opcodes.def row, in its order.
 constexpr OpFn kOps[] = {
-#define ARBVP_OPCODE(name, stages, signature, klass, spec) &Op##name,
+#define ARBVP_OPCODE(name, vp, fp, signature, klass, vp_mods, fp_mods, fp2_mods, reads, spec) \
+  &Op##name,
 #include "arbiter/arbvp/opcodes.def"
 #undef ARBVP_OPCODE
 };

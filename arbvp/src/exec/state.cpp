@@ -215,12 +215,14 @@ int ResultRank(const Binding& b) {
       return 6;
     case ResultReg::TexCoord:
       return 7;
-    case ResultReg::FragColor:
+    case ResultReg::ClipDistance:
       return 8;
-    case ResultReg::FragDepth:
+    case ResultReg::FragColor:
       return 9;
+    case ResultReg::FragDepth:
+      return 10;
   }
-  return 10;
+  return 11;
 }
 
 }  // namespace

@@ -103,6 +103,8 @@ std::string OutputExpr(const Binding& b) {
       return "vec4(arbiter_pointsize, 0.0, 0.0, 0.0)";
     case ResultReg::TexCoord:
       return fmt::format("arbiter_texcoord[{}]", b.index);
+    case ResultReg::ClipDistance:  // NV_vertex_program2: Mesa runs no NV program
+      return fmt::format("vec4(arb_clip_distance{}, 0.0, 0.0, 0.0)", b.index);
     case ResultReg::FragColor:
       return fmt::format("arbiter_fragdata[{}]", b.index);
     case ResultReg::FragDepth:
