@@ -81,7 +81,8 @@ CheckResult CheckShader(Stage stage, const std::vector<const compiler::SourceFil
                     options.link,
                     /*linked=*/false,
                     &fragment_writes,
-                    prepared.preamble};
+                    prepared.preamble,
+                    prepared.renames};
   if (usable) RunStrictChecks(ctx);
   // Chapter 9: "translation_unit: external_declaration | translation_unit
   // external_declaration"; glslang takes a shader without any.

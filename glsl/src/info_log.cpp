@@ -329,7 +329,8 @@ bool Emit(const Message& m, const InfoLogContext& ctx, bool link, compiler::Diag
   const Relaxation* relaxed = m.warning ? nullptr : Relaxed(m.body, ctx, link);
   if (relaxed != nullptr && relaxed->warning == Diag::CompileError) return false;
   // glslang's messages name the words source_text.cpp renamed as it saw them.
-  std::string restored = RestoreSpelling(m.body);
+  std::string restored = ctx.prepared != nullptr ? RestoreSpelling(m.body, ctx.prepared->renames)
+                                                 : RestoreSpelling(m.body);
   std::string_view body = restored;
   // Summary lines ("3 compilation errors.  No code generated.") repeat what came before.
   if (body.find("compilation errors") != std::string_view::npos ||

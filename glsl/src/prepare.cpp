@@ -10,6 +10,7 @@
 #include "charset.h"
 #include "diag.h"
 #include "extensions.h"
+#include "function_names.h"
 #include "gpu4_preamble.h"
 #include "scan.h"
 #include "source_text.h"
@@ -252,6 +253,13 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
     out.preamble_file = options.preprocessor.preamble;
     out.preamble += PrepareForGlslang(options.preprocessor.preamble->text());
     if (!out.preamble.empty() && out.preamble.back() != '\n') out.preamble += '\n';
+  }
+  // 1.20 4.2 puts functions in the name space of variables; 1.10 gives them their own.
+  if (out.version == 110) {
+    std::vector<std::string*> texts;
+    for (std::string& text : out.texts) texts.push_back(&text);
+    texts.push_back(&out.preamble);
+    out.renames = SeparateFunctionNames(texts);
   }
   return out;
 }

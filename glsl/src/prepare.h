@@ -12,6 +12,7 @@
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/check.h"
+#include "source_text.h"
 
 namespace glslang {
 class TShader;
@@ -51,6 +52,9 @@ struct PreparedShader {
   // Lines of `preamble` before the text of --preamble's file, and that file (or nullptr).
   uint32_t preamble_generated_lines = 0;
   const compiler::SourceFile* preamble_file = nullptr;
+  // The functions renamed in `texts` and `preamble` for 1.10's separate name spaces
+  // (function_names.h); messages and AST names are spelled back with them.
+  std::vector<Rename> renames;
 };
 
 // Reads the directives of `sources` (one shader's strings), reporting what is wrong with them

@@ -21,6 +21,20 @@ inline bool IsLineBlank(char c) {
   return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r';
 }
 
+// Calls `f(begin, end)` for each run of identifier characters (a name or a number) of `text`.
+template <typename F>
+void ForEachWord(std::string_view text, F f) {
+  for (size_t i = 0; i < text.size();) {
+    if (!IsIdentChar(text[i])) {
+      ++i;
+      continue;
+    }
+    const size_t begin = i;
+    while (i < text.size() && IsIdentChar(text[i])) ++i;
+    f(begin, i);
+  }
+}
+
 struct Token {
   enum Kind : uint8_t { Identifier, Number, Punct };
   Kind kind;

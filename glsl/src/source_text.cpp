@@ -29,26 +29,26 @@ constexpr Substitute kSubstitutes[] = {
     {"filter", "fi____"}, {"partition", "pa_______"},
 };
 
-// Replaces whole words of `text` by same-length words.
+// Replaces each whole word of `text` that `replacement` gives a same-length word for (in
+// place, so the scan goes on over the same buffer).
+template <typename Replacement>
+void ReplaceWords(std::string* text, Replacement replacement) {
+  ForEachWord(*text, [&](size_t begin, size_t end) {
+    std::string_view to = replacement(std::string_view(*text).substr(begin, end - begin));
+    if (!to.empty()) text->replace(begin, to.size(), to);
+  });
+}
+
+// The substitutes of kSubstitutes, to glslang's words or back.
 void ReplaceWords(std::string* text, bool to_glslang) {
-  std::string& s = *text;
-  for (size_t i = 0; i < s.size();) {
-    if (!IsIdentChar(s[i])) {
-      ++i;
-      continue;
-    }
-    size_t start = i;
-    while (i < s.size() && IsIdentChar(s[i])) ++i;
-    std::string_view word(s.data() + start, i - start);
+  ReplaceWords(text, [to_glslang](std::string_view word) -> std::string_view {
     for (const Substitute& sub : kSubstitutes) {
-      std::string_view from = to_glslang ? sub.word : sub.glslang;
-      std::string_view to = to_glslang ? sub.glslang : sub.word;
-      if (word == from) {
-        s.replace(start, from.size(), to);
-        break;
+      if (word == (to_glslang ? sub.word : sub.glslang)) {
+        return to_glslang ? sub.glslang : sub.word;
       }
     }
-  }
+    return {};
+  });
 }
 
 // The index of the token that closes the bracket opened at `open`; tokens.size() if none.
@@ -228,8 +228,14 @@ std::string PrepareForGlslang(std::string_view text) {
   return out;
 }
 
-std::string RestoreSpelling(std::string_view text) {
+std::string RestoreSpelling(std::string_view text, std::span<const Rename> renames) {
   std::string out(text);
+  ReplaceWords(&out, [renames](std::string_view word) -> std::string_view {
+    for (const Rename& r : renames) {
+      if (word == r.glslang) return r.user;
+    }
+    return {};
+  });
   ReplaceWords(&out, /*to_glslang=*/false);
   return out;
 }

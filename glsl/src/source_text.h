@@ -2,6 +2,7 @@
 // differently, keeping every line and column of the user's tokens.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -17,7 +18,14 @@ std::string PrepareForGlslang(std::string_view text);
 // The start of the name a name too long for glslang gets (then a hash, then blanks).
 inline constexpr std::string_view kLongNamePrefix = "arbiter_long_name_";
 
-// The user's spelling of glslang's text (a message, a symbol name): undoes the renaming.
-std::string RestoreSpelling(std::string_view text);
+// A name glslang is given in place of the user's, as long as it (function_names.h).
+struct Rename {
+  std::string glslang;
+  std::string user;
+};
+
+// The user's spelling of glslang's text (a message, a symbol name): undoes the renaming, and
+// the `renames` of one shader.
+std::string RestoreSpelling(std::string_view text, std::span<const Rename> renames = {});
 
 }  // namespace arbiter::glsl

@@ -84,6 +84,33 @@ TEST(Strict, ConstInitializersCallNoFunctions) {
       ElementsAre("2:28 glsl-const-initializer-call"));
 }
 
+// 4.2: in 1.10 "Functions names are always identifiable as function names based on context,
+// and they have their own name space"; glslang reads a call as the constant of that name.
+// 1.20 4.2 shares one name space.
+TEST(Strict, FunctionsHaveTheirOwnNameSpace) {
+  const std::string shader =
+      "float foo() { return 0.5; }\nconst float foo = 1.0;\n"
+      "void main() { gl_Position = vec4(foo - foo()); }\n";
+  EXPECT_THAT(Check(Stage::Vertex, shader), IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex, "#version 120\n" + shader),
+              ::testing::Contains("3:13 glsl-redefinition"));
+  // A local const, a one-letter name ('_' taken), a call in a macro.
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "float f(float x) { return x; }\n#define TWICE f(2.0)\nvoid main() {\n"
+                    "  const float f = 1.0, _ = 0.0;\n  gl_Position = vec4(f(f) + TWICE);\n}\n"),
+              IsEmpty());
+  // A wrong call keeps its error, with the user's name.
+  compiler::SourceFile source("test",
+                              "float foo(float x) { return x; }\nconst float foo = 1.0;\n"
+                              "void main() {\n  gl_Position = vec4(foo(foo, 2.0));\n}\n");
+  compiler::DiagnosticSink sink(0);
+  CheckShader(Stage::Vertex, {&source}, {}, &sink);
+  ASSERT_EQ(sink.diagnostics().size(), 1u);
+  EXPECT_EQ(std::string(sink.diagnostics()[0].info->code), "glsl-no-matching-function");
+  EXPECT_EQ(source.Locate(sink.diagnostics()[0].range.begin).column, 22u);
+  EXPECT_THAT(sink.diagnostics()[0].message, ::testing::HasSubstr("'foo'"));
+}
+
 // 7.1: not writing gl_Position allows a diagnostic (a warning for a shader), and fails a
 // program link.
 TEST(Strict, PositionUnwritten) {

@@ -3,12 +3,14 @@
 // drops checks ctx.version.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "../diag.h"
 #include "../scan.h"
+#include "../source_text.h"
 #include "arbiter/compiler/diagnostic.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/glsl/check.h"
@@ -41,6 +43,8 @@ struct StrictContext {
   FragmentOutputWrites* fragment_writes;
   // What glslang reads before the shader's first line (-D, -U, --preamble; prepare.h).
   std::string_view preamble = {};
+  // The functions glslang knows by another name (function_names.h), for RestoreSpelling.
+  std::span<const Rename> renames = {};
   // Each source with its comments blanked, made once for the chapters that scan the text
   // (BlankedText); empty until the first asks.
   mutable std::vector<std::string> blanked = {};

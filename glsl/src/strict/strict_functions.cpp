@@ -50,7 +50,7 @@ void Report(const StrictContext& ctx, Diag diag, const glslang::TSourceLoc& loc,
 }
 
 void CheckParameters(const StrictContext& ctx, glslang::TIntermAggregate* function) {
-  const std::string function_name = RestoreSpelling(function->getName().c_str());
+  const std::string function_name = RestoreSpelling(function->getName().c_str(), ctx.renames);
   const std::string short_name = function_name.substr(0, function_name.find('('));
   if (HoldsSampler(function->getType())) {
     Report(ctx, Diag::SamplerUse, function->getLoc(), short_name,

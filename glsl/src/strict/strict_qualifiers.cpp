@@ -85,7 +85,7 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
       const glslang::TIntermSymbol* target = assign->getLeft()->getAsSymbolNode();
       std::string name = target ? RestoreSpelling(target->getName().c_str()) : "a global";
       if (finder.found == nullptr && finder.call != nullptr) {
-        std::string callee = RestoreSpelling(finder.call->getName().c_str());
+        std::string callee = RestoreSpelling(finder.call->getName().c_str(), ctx.renames);
         callee = callee.substr(0, callee.find('('));
         Report(ctx, Diag::GlobalInitializer, finder.call->getLoc(), callee, "=",
                fmt::format("the initializer of global '{}' calls '{}'; GLSL 1.10 says global "
