@@ -284,6 +284,11 @@ constexpr Relaxation kRelaxations[] = {
     // 1.20 5.5, 5.6 make a constant index out of range an error ("is illegal").
     {"vector index out of range", false, false, Diag::IndexOutOfRange, 110},
     {"matrix index out of range", false, false, Diag::IndexOutOfRange, 110},
+    // 4.3.2 and 5.9: a comma of constant operands is constant (1.20 4.3.3 too); glslang 12
+    // folds no comma (GLSL 4.x excludes the sequence operator). It keeps the local const
+    // read-only, with its initializer, and goes on; strict_qualifiers.cpp judges the operands.
+    {"'non-constant initializer' : not supported for this version", false, false,
+     Diag::CompileError},
     // 7.2: only assigning both gl_FragColor and gl_FragData is an error; glslang counts any
     // use. strict_builtins.cpp checks the static writes instead.
     {"Cannot use both gl_FragColor and gl_FragData", true, false, Diag::CompileError},

@@ -84,6 +84,45 @@ TEST(Strict, ConstInitializersCallNoFunctions) {
       ElementsAre("2:28 glsl-const-initializer-call"));
 }
 
+// 4.3.2 and 5.9: a comma of constant expressions is one (1.20 4.3.3 too). glslang 12 folds no
+// comma; arbiter judges the operands of each const initializer glslang leaves unfolded.
+TEST(Strict, ConstInitializersWithComma) {
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "void main() {\n  const mat2 m = mat2(1.0);\n  const vec2 c = m[0, 1];\n"
+                    "  const float f = (c.x, 2.0) * c.y;\n  gl_FragColor = vec4(c, f, 1.0);\n}\n"),
+              IsEmpty());
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "float f(const in float p) {\n  const float a = (1.0, 2.0), b = (a, p);\n"
+                    "  return b;\n}\n" +
+                        std::string(kMain)),
+              ElementsAre("2:39 glsl-const-initializer-operand"));
+  // The left operand too, though only the right one gives the value (Mesa accepts this).
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "uniform float u;\nvoid main() {\n  const float f = (u, 1.0);\n"
+                    "  gl_FragColor = vec4(f);\n}\n"),
+              ElementsAre("3:20 glsl-const-initializer-operand"));
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "void main() {\n  float x = 1.0;\n  const float c = x;\n"
+                    "  gl_Position = vec4(c);\n}\n"),
+              ElementsAre("3:19 glsl-const-initializer-operand"));
+  // 1.10: the call is reported once, from the text (ConstInitializersCallNoFunctions).
+  const std::string call =
+      "float g() { return 1.0; }\nvoid main() {\n  const float a = (1.0, g());\n"
+      "  const float c = (a, 2.0);\n  gl_Position = vec4(c);\n}\n";
+  EXPECT_THAT(Check(Stage::Vertex, call), ElementsAre("3:25 glsl-const-initializer-call"));
+  EXPECT_THAT(Check(Stage::Vertex, "#version 120\n" + call),
+              ElementsAre("4:25 glsl-const-initializer-call"));
+  // 1.20 4.3.3: no noise function nor ftransform, which glslang does not fold either.
+  EXPECT_THAT(Check(Stage::Vertex,
+                    "#version 120\nvoid main() {\n  const float n = noise1(0.5);\n"
+                    "  const vec4 p = (1.0, ftransform());\n  gl_Position = p * n;\n}\n"),
+              ElementsAre("3:19 glsl-const-initializer-call", "4:24 glsl-const-initializer-call"));
+  EXPECT_THAT(Check(Stage::Fragment,
+                    "#version 120\nvoid main() {\n  const vec4 v = (vec4(1.0), vec4(2.0));\n"
+                    "  gl_FragColor = v * v[0, 1];\n}\n"),
+              IsEmpty());
+}
+
 // 4.2: in 1.10 "Functions names are always identifiable as function names based on context,
 // and they have their own name space"; glslang reads a call as the constant of that name.
 // 1.20 4.2 shares one name space.

@@ -57,7 +57,8 @@ struct StrictContext {
 void CheckPreprocessor(const StrictContext& ctx);  // strict_preprocessor.cpp
 // Chapter 3.3, #if and #elif: operands are integer literals and 'defined' only.
 void CheckConditionals(const StrictContext& ctx);  // strict_conditionals.cpp
-// Chapter 4, qualifiers: varying types, constant global initializers.
+// Chapter 4, qualifiers: varying types, constant global initializers, the operands of const
+// initializers glslang does not fold.
 void CheckQualifiers(const StrictContext& ctx);  // strict_qualifiers.cpp
 // Chapter 4.3.2: no function calls in const initializers.
 void CheckConstInitializers(const StrictContext& ctx);  // strict_const.cpp

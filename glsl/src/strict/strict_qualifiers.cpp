@@ -1,11 +1,14 @@
 // GLSL 1.10 chapter 4 (variables, types and qualifiers), where glslang 12 follows later
 // versions: varyings of integer, boolean or structure type (4.3.6, allowed from 1.30 on),
-// and global initializers that are not constant (4.3: "Such initializers must have constant
-// type"; later versions allow any expression). Checked from the AST.
+// global initializers that are not constant (4.3: "Such initializers must have constant
+// type"; later versions allow any expression), and the const initializers glslang does not
+// fold (4.3.2; the comma operator, which later versions exclude). Checked from the AST.
 #include <fmt/format.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include <algorithm>
 #include <cctype>
+#include <set>
 
 #include "../source_text.h"
 #include "strict.h"
@@ -40,21 +43,52 @@ void Report(const StrictContext& ctx, Diag diag, const glslang::TSourceLoc& loc,
   ctx.sink->Report(Info(diag), file, range, std::move(message));
 }
 
+// The built-in functions 1.20 4.3.3 leaves out of constant expressions besides the texture
+// lookups (whose sampler is no constant operand anyway).
+constexpr glslang::TOperator kNonConstantBuiltins[] = {glslang::EOpNoise, glslang::EOpFtransform};
+
 // Finds a symbol that is not a compile-time constant in an initializer expression.
 class NonConstantUse : public glslang::TIntermTraverser {
  public:
   const glslang::TIntermSymbol* found = nullptr;
 
-  const glslang::TIntermAggregate* call = nullptr;  // a user function call
+  const glslang::TIntermAggregate* call = nullptr;    // a user function call
+  const glslang::TIntermOperator* builtin = nullptr;  // a call of kNonConstantBuiltins
+
+  // Read-only variables that count as constant too (by glslang symbol id).
+  const std::set<long long>* constants = nullptr;
 
   void visitSymbol(glslang::TIntermSymbol* symbol) override {
-    if (found == nullptr && symbol->getQualifier().storage != glslang::EvqConst) found = symbol;
+    if (found != nullptr || symbol->getQualifier().storage == glslang::EvqConst) return;
+    if (constants == nullptr || constants->count(symbol->getId()) == 0) found = symbol;
   }
   bool visitAggregate(glslang::TVisit, glslang::TIntermAggregate* node) override {
     if (node->getOp() == glslang::EOpFunctionCall && call == nullptr) call = node;
+    NoteBuiltin(node);
     return true;
   }
+  bool visitUnary(glslang::TVisit, glslang::TIntermUnary* node) override {
+    NoteBuiltin(node);
+    return true;
+  }
+
+ private:
+  void NoteBuiltin(const glslang::TIntermOperator* node) {
+    for (glslang::TOperator op : kNonConstantBuiltins) {
+      if (node->getOp() == op && builtin == nullptr) builtin = node;
+    }
+  }
 };
+
+// The name of a call NonConstantUse found: glslang's locations of calls are not the names'.
+std::string CalleeName(const glslang::TIntermOperator& call, std::span<const Rename> renames) {
+  if (call.getOp() == glslang::EOpNoise) {
+    return fmt::format("noise{}", std::max(call.getType().getVectorSize(), 1));
+  }
+  if (call.getOp() == glslang::EOpFtransform) return "ftransform";
+  std::string name = RestoreSpelling(call.getAsAggregate()->getName().c_str(), renames);
+  return name.substr(0, name.find('('));
+}
 
 std::string_view StorageName(const glslang::TQualifier& q) {
   switch (q.storage) {
@@ -65,6 +99,12 @@ std::string_view StorageName(const glslang::TQualifier& q) {
       return "varying or attribute";
     case glslang::EvqGlobal:
       return "global variable";
+    case glslang::EvqConstReadOnly:
+      return "const function parameter";
+    case glslang::EvqIn:
+    case glslang::EvqOut:
+    case glslang::EvqInOut:
+      return "function parameter";
     default:
       return "non-constant variable";
   }
@@ -104,6 +144,62 @@ void CheckGlobalInitializers(const StrictContext& ctx, TIntermNode* root) {
     }
   }
 }
+
+// 4.3.2: "Initializers for const declarations must be formed from literal values, other const
+// variables (not including function call parameters), or expressions of these"; 5.9 lists the
+// sequence operator (',') among the operators, and 1.20 4.3.3 makes "an expression formed by
+// an operator on operands that are all constant expressions" constant. glslang 12 folds no
+// comma (as GLSL 4.x), so a local const initialized with one, or with such a const, is only
+// read-only to it, its initializer kept (the relaxed "non-constant initializer" of
+// info_log.cpp). Its operands are judged here, in declaration order.
+class ConstInitializers : public glslang::TIntermTraverser {
+ public:
+  explicit ConstInitializers(const StrictContext& ctx) : ctx_(ctx) {}
+
+  bool visitBinary(glslang::TVisit, glslang::TIntermBinary* node) override {
+    const glslang::TIntermSymbol* target = node->getLeft()->getAsSymbolNode();
+    // A read-only variable assigned is a const being initialized: glslang refuses any
+    // other assignment to it.
+    if (node->getOp() != glslang::EOpAssign || target == nullptr ||
+        target->getQualifier().storage != glslang::EvqConstReadOnly) {
+      return true;
+    }
+    Judge(*target, node->getRight());
+    read_only_consts_.insert(target->getId());
+    return false;
+  }
+
+ private:
+  void Judge(const glslang::TIntermSymbol& target, TIntermNode* initializer) {
+    NonConstantUse finder;
+    finder.constants = &read_only_consts_;
+    initializer->traverse(&finder);
+    const std::string name = RestoreSpelling(target.getName().c_str());
+    if (finder.found != nullptr) {
+      const std::string used = RestoreSpelling(finder.found->getName().c_str());
+      Report(ctx_, Diag::ConstInitializerOperand, finder.found->getLoc(), used, "const",
+             fmt::format("the initializer of const '{}' reads {} '{}': {} const initializers "
+                         "are formed from literals, const variables other than parameters, "
+                         "and expressions of these (section 4.3.2)",
+                         name, StorageName(finder.found->getQualifier()), used, VersionName(ctx_)));
+      return;
+    }
+    // 1.10: CheckConstInitializers reports every call of a const initializer, from the text.
+    if (ctx_.version == 110) return;
+    const glslang::TIntermOperator* call = finder.call;
+    if (call == nullptr) call = finder.builtin;
+    if (call == nullptr) return;
+    const std::string callee = CalleeName(*call, ctx_.renames);
+    Report(ctx_, Diag::ConstInitializerCall, call->getLoc(), callee, "const",
+           fmt::format("the initializer of const '{}' calls '{}': {} constant expressions call "
+                       "no user function, texture lookup, noise function or ftransform "
+                       "(section 4.3.3)",
+                       name, callee, VersionName(ctx_)));
+  }
+
+  const StrictContext& ctx_;
+  std::set<long long> read_only_consts_;
+};
 
 void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
   glslang::TIntermAggregate* top = root->getAsAggregate();
@@ -171,6 +267,8 @@ void CheckQualifiers(const StrictContext& ctx) {
   if (!ctx.gpu4) CheckVaryingTypes(ctx, root);
   // 1.20 drops 1.10's "such initializers must have constant type" (4.3).
   if (ctx.version == 110) CheckGlobalInitializers(ctx, root);
+  ConstInitializers const_initializers(ctx);
+  root->traverse(&const_initializers);
 }
 
 }  // namespace arbiter::glsl
