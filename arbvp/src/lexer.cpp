@@ -38,9 +38,10 @@ constexpr CharTables MakeTables() {
   for (int c = '0'; c <= '9'; ++c) t.classes[static_cast<size_t>(c)] = kDigit;
   t.classes['.'] = kDot;
   const std::pair<unsigned char, Tok> singles[] = {
-      {',', Tok::Comma},    {';', Tok::Semicolon}, {'[', Tok::LBracket},
-      {']', Tok::RBracket}, {'{', Tok::LBrace},    {'}', Tok::RBrace},
-      {'=', Tok::Equals},   {'+', Tok::Plus},      {'-', Tok::Minus}};
+      {',', Tok::Comma},  {';', Tok::Semicolon}, {'[', Tok::LBracket}, {']', Tok::RBracket},
+      {'{', Tok::LBrace}, {'}', Tok::RBrace},    {'=', Tok::Equals},   {'+', Tok::Plus},
+      {'-', Tok::Minus},  {'|', Tok::Bar},       {':', Tok::Colon},    {'(', Tok::LParen},
+      {')', Tok::RParen}};
   for (const auto& [c, tok] : singles) {
     t.classes[c] = kSingle;
     t.single[c] = tok;
@@ -252,6 +253,14 @@ std::string_view TokenKindName(Tok kind) {
       return "'+'";
     case Tok::Minus:
       return "'-'";
+    case Tok::Bar:
+      return "'|'";
+    case Tok::Colon:
+      return "':'";
+    case Tok::LParen:
+      return "'('";
+    case Tok::RParen:
+      return "')'";
     case Tok::Eof:
       return "end of program";
   }

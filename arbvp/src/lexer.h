@@ -25,6 +25,10 @@ enum class Tok : uint8_t {
   Equals,     // =
   Plus,       // +
   Minus,      // -
+  Bar,        // |  (NV options: absolute value)
+  Colon,      // :  (NV options: a label)
+  LParen,     // (  (NV options: a condition code mask)
+  RParen,     // )
   Eof,
 };
 

@@ -19,6 +19,8 @@
 #include "arbiter/compiler/suggest.h"
 #include "diag.h"
 #include "flat_table.h"
+#include "flow.h"
+#include "nv_syntax.h"
 
 namespace arbiter::arbvp {
 
@@ -198,6 +200,11 @@ class Parser {
     last_end_ = header.end;
     ParseProgram();
     ReportLexicalErrors();  // those after END
+    if (program_->Nv()) {
+      ResolveFlow(program_.get(), source_, [this](Diag diag, Range range, std::string message) {
+        return ReportDiagnostic(diag, range, std::move(message));
+      });
+    }
     return std::move(program_);
   }
 
@@ -419,9 +426,8 @@ class Parser {
     if (Is(s, "END") || Is(s, "OPTION") || Is(s, "ATTRIB") || Is(s, "PARAM") || Is(s, "TEMP") ||
         Is(s, "ADDRESS") || Is(s, "OUTPUT") || Is(s, "ALIAS"))
       return true;
-    Opcode op;
-    if (s.size() > 4 && Is(s.substr(s.size() - 4), "_SAT")) s.remove_suffix(4);
-    return LookupOpcode(s, &op);
+    OpcodeWord decoded;
+    return DecodeOpcodeWord(s, &decoded);
   }
 
   // Every statement ends with ';'. A missing one points just after the previous token; when
@@ -476,6 +482,12 @@ class Parser {
     const Token& t = Peek();
     if (t.kind != Tok::Ident) return FailExpected("an instruction or a declaration");
     std::string_view word = Text(t);
+    // <statement> ::= <branchLabel> ":" (NV_vertex_program2, NV_fragment_program2)
+    if (PeekIs(Tok::Colon, 1)) return ParseLabel();
+    if ((Is(word, "SHORT") || Is(word, "LONG")) && PeekIs(Tok::Ident, 1) &&
+        (Is(Text(Peek(1)), "TEMP") || Is(Text(Peek(1)), "OUTPUT"))) {
+      return ParseSizedStatement();
+    }
     if (Is(word, "ATTRIB")) return ParseAttribStatement();
     if (Is(word, "PARAM")) return ParseParamStatement();
     if (Is(word, "TEMP")) return ParseVarListStatement(VarKind::Temp);
@@ -490,6 +502,37 @@ class Parser {
     if (Is(word, "OUTPUT")) return ParseOutputStatement();
     if (Is(word, "ALIAS")) return ParseAliasStatement();
     return ParseInstruction();
+  }
+
+  // <branchLabel> ":"
+  [[nodiscard]] bool ParseLabel() {
+    Token name = Advance();
+    Advance();  // ':'
+    const bool allowed = vp() ? program_->NvLevel() >= 1 : program_->NvLevel() >= 2;
+    if (!allowed) {
+      return Fail(Diag::SyntaxNvConstruct, RangeOf(name),
+                  fmt::format("the label '{}:' needs OPTION {}", Text(name),
+                              vp() ? "NV_vertex_program2" : "NV_fragment_program2"));
+    }
+    program_->labels.push_back(
+        {std::string(Text(name)), static_cast<int>(program_->instructions.size()), RangeOf(name)});
+    return true;
+  }
+
+  // <varSize> "TEMP" ... / <varSize> "OUTPUT" ... (NV_fragment_program)
+  [[nodiscard]] bool ParseSizedStatement() {
+    Token size = Advance();
+    if (!(fp() && program_->Nv())) {
+      return Fail(Diag::SyntaxNvConstruct, RangeOf(size),
+                  fmt::format("'{}' declarations need OPTION NV_fragment_program", Text(size)));
+    }
+    const size_t first = program_->vars.size();
+    const bool temp = Is(Text(Peek()), "TEMP");
+    if (!(temp ? ParseVarListStatement(VarKind::Temp) : ParseOutputStatement())) return false;
+    for (size_t v = first; v < program_->vars.size(); ++v) {
+      program_->vars[v].size = Is(Text(size), "SHORT") ? VarSize::Short : VarSize::Long;
+    }
+    return true;
   }
 
   // ---- names ---------------------------------------------------------------------------
@@ -938,7 +981,8 @@ class Parser {
     Binding& b = *out;
     b.kind = BindingKind::FragmentAttrib;
     Token item;
-    if (!ExpectWord({"color", "texcoord", "fogcoord", "position"}, "fragment attribute", &item)) {
+    if (!ExpectWord({"color", "texcoord", "fogcoord", "position", "facing"}, "fragment attribute",
+                    &item)) {
       return false;
     }
     std::string_view w = Text(item);
@@ -956,6 +1000,13 @@ class Parser {
       ok = ParseOptionalIndex(&b, "a texture coordinate number");
     } else if (Is(w, "fogcoord")) {
       b.fragment_attrib = FragmentAttrib::FogCoord;
+    } else if (Is(w, "facing")) {
+      // <attribFragBasic> ::= "facing" (NV_fragment_program2)
+      if (program_->NvLevel() < 2) {
+        return Fail(Diag::OptionRequired, RangeOf(item),
+                    "'fragment.facing' needs OPTION NV_fragment_program2");
+      }
+      b.fragment_attrib = FragmentAttrib::Facing;
     } else {
       b.fragment_attrib = FragmentAttrib::Position;
     }
@@ -988,12 +1039,21 @@ class Parser {
                   "result.texcoord");
     }
     Token item;
-    if (!ExpectWord({"position", "color", "fogcoord", "pointsize", "texcoord"}, "vertex result",
-                    &item)) {
+    if (!ExpectWord({"position", "color", "fogcoord", "pointsize", "texcoord", "clip"},
+                    "vertex result", &item)) {
       return false;
     }
     std::string_view w = Text(item);
     b->selector = RangeOf(item);
+    if (Is(w, "clip")) {
+      // <resultVtxBasic> ::= "clip" "[" <clipPlaneNum> "]" (NV_vertex_program2)
+      if (!program_->Nv()) {
+        return Fail(Diag::OptionRequired, RangeOf(item),
+                    "'result.clip[n]' needs OPTION NV_vertex_program2");
+      }
+      b->result = ResultReg::ClipDistance;
+      return ParseRequiredIndex(b, "a clip plane number");
+    }
     if (Is(w, "position")) {
       b->result = ResultReg::Position;
     } else if (Is(w, "color")) {
@@ -1341,33 +1401,103 @@ class Parser {
     std::string_view word = Text(op_token);
     Instruction inst;
     inst.opcode_range = RangeOf(op_token);
-    std::string_view base = word;
-    if (base.size() > 4 && Is(base.substr(base.size() - 4), "_SAT")) {
-      base.remove_suffix(4);
-      inst.saturate = true;
-    }
-    if (!LookupOpcode(base, &inst.op)) return ReportUnknownStatement(op_token);
+    OpcodeWord decoded;
+    if (!DecodeOpcodeWord(word, &decoded)) return ReportUnknownStatement(op_token);
+    inst.op = decoded.op;
+    inst.saturate = decoded.saturate;
+    inst.signed_saturate = decoded.signed_saturate;
+    inst.precision = decoded.precision;
+    inst.cc_update = decoded.cc;
     const OpcodeInfo& info = GetOpcodeInfo(inst.op);
     if (inst.saturate && inst.op == Opcode::KIL) {
       return Fail(Diag::SyntaxUnknownOpcode, RangeOf(op_token),
                   "unknown instruction 'KIL_SAT': KIL writes no register, so it has no _SAT form");
     }
-    if (!OpcodeInStage(inst.op, kind_)) {
-      return Fail(
-          Diag::SyntaxOpcodeStage, RangeOf(op_token),
-          fmt::format("'{}' is a {}-program instruction; it is not available in {} programs",
-                      info.name, vp() ? "fragment" : "vertex", vp() ? "vertex" : "fragment"));
-    }
-    if (inst.saturate && vp()) {
-      return Fail(Diag::SyntaxSaturateVp, RangeOf(op_token),
-                  fmt::format("'{}': the _SAT suffix exists only in fragment programs; clamp "
-                              "with MIN and MAX in a vertex program",
-                              word));
-    }
+    if (!program_->HasOpcode(inst.op)) return ReportOpcodeUnavailable(op_token, info);
+    if (!CheckModifiers(op_token, info, inst)) return false;
     if (!ParseOperands(info, &inst)) return false;
     inst.range = {op_token.begin, last_end_};
     program_->instructions.push_back(inst);
     return ExpectSemicolon("instruction", info.name);
+  }
+
+  // An opcode this program does not have: of the other kind, or of an NV option it lacks.
+  [[nodiscard]] bool ReportOpcodeUnavailable(const Token& op_token, const OpcodeInfo& info) {
+    const OpLevel here = OpcodeLevel(info.op, kind_);
+    if (here == OpLevel::No) {
+      const OpLevel there =
+          OpcodeLevel(info.op, vp() ? ProgramKind::Fragment : ProgramKind::Vertex);
+      const std::string_view other = vp() ? "fragment" : "vertex";
+      return Fail(Diag::SyntaxOpcodeStage, RangeOf(op_token),
+                  there == OpLevel::Arb
+                      ? fmt::format("'{}' is a {}-program instruction; it is not available in {} "
+                                    "programs",
+                                    info.name, other, vp() ? "vertex" : "fragment")
+                      : fmt::format("'{}' is a {}-program instruction of OPTION {}; it is not "
+                                    "available in {} programs",
+                                    info.name, other, NvOptionName(!vp(), there),
+                                    vp() ? "vertex" : "fragment"));
+    }
+    const OpLevel there = OpcodeLevel(info.op, vp() ? ProgramKind::Fragment : ProgramKind::Vertex);
+    if (there == OpLevel::Arb && !program_->Nv()) {
+      return Fail(Diag::SyntaxOpcodeStage, RangeOf(op_token),
+                  fmt::format("'{}' is a {}-program instruction; {} programs have it only with "
+                              "OPTION {}",
+                              info.name, vp() ? "fragment" : "vertex", vp() ? "vertex" : "fragment",
+                              NvOptionName(vp(), here)));
+    }
+    return Fail(Diag::OptionRequired, RangeOf(op_token),
+                fmt::format("'{}' needs OPTION {}", info.name, NvOptionName(vp(), here)));
+  }
+
+  // The suffixes of an opcode against its row of table X.5 and the program's options.
+  [[nodiscard]] bool CheckModifiers(const Token& op_token, const OpcodeInfo& info,
+                                    const Instruction& inst) {
+    const int level = program_->NvLevel();
+    std::string_view mods;
+    if (vp()) {
+      mods = level >= 2 ? info.vp_mods : level == 1 ? (info.vp_mods.empty() ? "" : "C") : "";
+    } else {
+      mods = level >= 2   ? info.fp2_mods
+             : level == 1 ? info.fp_mods
+                          : (info.op == Opcode::KIL ? "" : "S");
+    }
+    auto has = [&](char m) { return mods.find(m) != std::string_view::npos; };
+    auto fail = [&](std::string_view what, std::string_view need) {
+      return Fail(Diag::SyntaxModifier, RangeOf(op_token),
+                  fmt::format("'{}': {} {}", Text(op_token), what, need));
+    };
+    if ((inst.saturate || inst.signed_saturate) && !has('S')) {
+      if (vp() && level < 2 && !info.vp_mods.empty() && inst.saturate) {
+        return Fail(Diag::SyntaxSaturateVp, RangeOf(op_token),
+                    fmt::format("'{}': the _SAT suffix exists only in fragment programs (and in "
+                                "vertex programs with OPTION NV_vertex_program3); clamp with MIN "
+                                "and MAX",
+                                Text(op_token)));
+      }
+      return fail(inst.signed_saturate ? "_SSAT" : "_SAT",
+                  fmt::format("is not a form of {} here", info.name));
+    }
+    if (inst.signed_saturate && level < 2) {
+      return fail("_SSAT", "needs OPTION NV_fragment_program2");
+    }
+    if (inst.cc_update >= 0 && !has('C')) {
+      return fail("the condition code update suffix",
+                  level == 0 ? fmt::format("needs OPTION {}", NvOptionName(vp(), OpLevel::Nv))
+                             : fmt::format("is not a form of {}", info.name));
+    }
+    if (inst.cc_update == 1 && !(vp() && level >= 2)) {
+      return fail("condition code register 1", "needs OPTION NV_vertex_program3");
+    }
+    if (inst.precision != Precision::Default) {
+      const char letter = "?RHX"[static_cast<int>(inst.precision)];
+      if (!has(letter)) {
+        return fail(fmt::format("the precision suffix '{}'", letter),
+                    level == 0 || vp() ? std::string("needs OPTION NV_fragment_program")
+                                       : fmt::format("is not a form of {}", info.name));
+      }
+    }
+    return true;
   }
 
   // The operands of an instruction, as its opcode's signature lists them.
@@ -1396,9 +1526,10 @@ class Parser {
         return ParseMaskedDstReg(&inst->dst) && Expect(Tok::Comma, "',' and a source operand") &&
                ParseSwzSource(&inst->src[0]);
       case OpSignature::Arl:
+        // <ARLop_src> ::= <instOperandV> under NV_vertex_program2: A0.xy = floor(v.xy).
         inst->src_count = 1;
         return ParseMaskedAddrReg(&inst->dst) && Expect(Tok::Comma, "',' and a source operand") &&
-               ParseSwizzleSrcReg(true, info.name, &inst->src[0]);
+               ParseSwizzleSrcReg(!program_->Nv(), info.name, &inst->src[0]);
       case OpSignature::Sample:
         inst->src_count = 1;
         return ParseMaskedDstReg(&inst->dst) &&
@@ -1408,19 +1539,68 @@ class Parser {
                ParseTexImageUnit(inst) && Expect(Tok::Comma, "',' and a texture target") &&
                ParseTexTarget(inst);
       case OpSignature::VecSca:
+        inst->src_count = 2;
+        return ParseMaskedDstReg(&inst->dst) && Expect(Tok::Comma, "',' and a source operand") &&
+               ParseSwizzleSrcReg(false, {}, &inst->src[0]) &&
+               Expect(Tok::Comma, "',' and a scalar operand") &&
+               ParseSwizzleSrcReg(true, info.name, &inst->src[1]);
       case OpSignature::Ara:
+        inst->src_count = 1;
+        return ParseMaskedAddrReg(&inst->dst, info.name) &&
+               Expect(Tok::Comma, "',' and an address register") &&
+               ParseAddressOperand(info.name, &inst->src[0]);
       case OpSignature::Arr:
+        inst->src_count = 1;
+        return ParseMaskedAddrReg(&inst->dst, info.name) &&
+               Expect(Tok::Comma, "',' and a source operand") &&
+               ParseSwizzleSrcReg(false, {}, &inst->src[0]);
       case OpSignature::PushA:
+        inst->src_count = 1;
+        return ParseAddressOperand(info.name, &inst->src[0]);
       case OpSignature::PopA:
+        if (!ParseMaskedAddrReg(&inst->dst, info.name)) return false;
+        // NV_vertex_program3 2.14.5.43: "a program will fail to load if it includes a component
+        // write mask other than ".xyzw" or a condition code write mask test other than "TR"".
+        if (inst->dst.mask != 0xF || (inst->dst.cc.present && inst->dst.cc.rule != CcRule::TR)) {
+          return Fail(Diag::OperandBadMask, inst->dst.range,
+                      "POPA writes the whole address register: no write mask but '.xyzw' and no "
+                      "condition code test but TR");
+        }
+        return true;
       case OpSignature::TexD:
-      case OpSignature::Branch:
+        inst->src_count = 3;
+        if (!ParseMaskedDstReg(&inst->dst)) return false;
+        for (size_t i = 0; i < 3; ++i) {
+          if (!Expect(Tok::Comma, "',' and a source operand") ||
+              !ParseSwizzleSrcReg(false, {}, &inst->src[i])) {
+            return false;
+          }
+        }
+        return Expect(Tok::Comma, "',' and a texture unit ('texture[n]')") &&
+               ParseTexImageUnit(inst) && Expect(Tok::Comma, "',' and a texture target") &&
+               ParseTexTarget(inst);
+      case OpSignature::Branch: {
+        Token label;
+        if (!ExpectIdent("a label", &label)) return false;
+        inst->label = std::string(Text(label));
+        inst->label_range = RangeOf(label);
+        return ParseOptionalCcMask(&inst->cond);
+      }
       case OpSignature::FlowCc:
+        return ParseOptionalCcMask(&inst->cond);
       case OpSignature::If:
+        return ParseCcTest(&inst->cond);
       case OpSignature::Loop:
+        inst->src_count = 1;
+        return ParseSwizzleSrcReg(false, {}, &inst->src[0]);
       case OpSignature::EndFlow:
-        return Fail(Diag::SyntaxUnknownOpcode, inst->opcode_range,
-                    fmt::format("'{}' is not parsed yet", info.name));
+        return true;
       case OpSignature::Kil:
+        // <killCond> ::= <ccTest> under NV_fragment_program.
+        if (program_->Nv() && PeekIs(Tok::Ident) && IsCcRule(Text(Peek())) &&
+            !symbols_.Contains(Text(Peek()))) {
+          return ParseCcTest(&inst->cond);
+        }
         inst->src_count = 1;
         if (!ParseSwizzleSrcReg(false, {}, &inst->src[0])) return false;
         if (PeekIs(Tok::Comma)) {
@@ -1429,6 +1609,74 @@ class Parser {
         }
         return true;
     }
+    return true;
+  }
+
+  // <ccTest> ::= <ccMaskRule> <swizzleSuffix>; the rule may name register 0 or 1 ("GT1") under
+  // NV_vertex_program3.
+  [[nodiscard]] bool ParseCcTest(CcTest* cc) {
+    Token rule;
+    if (!ExpectIdent("a condition code test (EQ, GE, GT, LE, LT, NE, TR or FL)", &rule)) {
+      return false;
+    }
+    std::string_view w = Text(rule);
+    if (!IsCcRule(w)) {
+      return Fail(Diag::SyntaxExpected, RangeOf(rule),
+                  fmt::format("'{}' is not a condition code test; use EQ, GE, GT, LE, LT, NE, TR "
+                              "or FL",
+                              w));
+    }
+    cc->present = true;
+    cc->rule = CcRuleOf(w.substr(0, 2));
+    cc->reg = w.size() == 3 ? static_cast<uint8_t>(w[2] - '0') : 0;
+    if (w.size() == 3 && !(vp() && program_->NvLevel() >= 2)) {
+      return Fail(
+          Diag::SyntaxModifier, RangeOf(rule),
+          fmt::format("'{}': condition code register {} needs OPTION NV_vertex_program3", w, w[2]));
+    }
+    cc->range = RangeOf(rule);
+    if (PeekIs(Tok::Dot)) {
+      Advance();
+      Token swz;
+      SrcOperand tmp;
+      if (!ExpectIdent("a swizzle", &swz) || !ParseSwizzle(swz, false, {}, &tmp)) return false;
+      cc->swizzle = tmp.swizzle;
+      cc->range.end = last_end_;
+    }
+    return true;
+  }
+
+  // <optBranchCond> / the conditional write mask: "(" <ccTest> ")" or nothing.
+  [[nodiscard]] bool ParseOptionalCcMask(CcTest* cc) {
+    if (!PeekIs(Tok::LParen)) return true;
+    Token open = Advance();
+    if (!program_->Nv()) {
+      return Fail(
+          Diag::SyntaxNvConstruct, RangeOf(open),
+          fmt::format("a condition code mask needs OPTION {}", NvOptionName(vp(), OpLevel::Nv)));
+    }
+    return ParseCcTest(cc) && Expect(Tok::RParen, "')' after the condition code test");
+  }
+
+  // An inline scalar constant ("3.5"): one value, whatever the swizzle.
+  bool IsInlineScalar(const SrcOperand& src) const {
+    const Variable& v = program_->vars[static_cast<size_t>(src.var)];
+    if (!v.name.empty() || v.kind != VarKind::Param || v.bindings.size() != 1) return false;
+    const Binding& b = v.bindings[0];
+    return b.kind == BindingKind::Constant && b.value[0] == b.value[1] &&
+           b.value[0] == b.value[2] && b.value[0] == b.value[3];
+  }
+
+  // <instOperandAddrVNS> ::= <addrVarName>: a whole address register (ARA, PUSHA).
+  [[nodiscard]] bool ParseAddressOperand(std::string_view opname, SrcOperand* src) {
+    Token name;
+    if (!ExpectIdent("an address register", &name) || !ResolveName(name, &src->var)) return false;
+    if (program_->vars[static_cast<size_t>(src->var)].kind != VarKind::Address) {
+      return Fail(Diag::DeclWrongKind, RangeOf(name),
+                  fmt::format("{} reads an address register, but '{}' is a {}", opname, Text(name),
+                              KindName(program_->vars[static_cast<size_t>(src->var)].kind)));
+    }
+    src->range = RangeOf(name);
     return true;
   }
 
@@ -1509,7 +1757,8 @@ class Parser {
       Token mask;
       if (!ExpectIdent("a write mask", &mask) || !ParseMask(mask, &dst.mask)) return false;
     }
-    return true;
+    // <instResultCC> ::= <instResultBase> <ccMask> (NV options)
+    return ParseOptionalCcMask(&dst.cc);
   }
 
   static std::string_view KindName(VarKind k) {
@@ -1608,18 +1857,27 @@ class Parser {
   }
 
   // <maskedAddrReg> ::= <addrReg> <addrWriteMask>; <addrWriteMask> ::= "." "x"
-  [[nodiscard]] bool ParseMaskedAddrReg(DstOperand* out) {
+  [[nodiscard]] bool ParseMaskedAddrReg(DstOperand* out, std::string_view opname = "ARL") {
     DstOperand& dst = *out;
     Token name;
     int var = 0;
     if (!ExpectIdent("an address register", &name) || !ResolveName(name, &var)) return false;
     if (program_->vars[static_cast<size_t>(var)].kind != VarKind::Address) {
       return Fail(Diag::DeclWrongKind, RangeOf(name),
-                  fmt::format("ARL writes an address register, but '{}' is a {}", Text(name),
+                  fmt::format("{} writes an address register, but '{}' is a {}", opname, Text(name),
                               KindName(program_->vars[static_cast<size_t>(var)].kind)));
     }
     dst.var = var;
     dst.range = RangeOf(name);
+    // NV_vertex_program2: <addrUseW> ::= <addrVarName> <optAddrWriteMask>, any components.
+    if (program_->Nv()) {
+      if (PeekIs(Tok::Dot)) {
+        Advance();
+        Token mask;
+        if (!ExpectIdent("a write mask", &mask) || !ParseMask(mask, &dst.mask)) return false;
+      }
+      return ParseOptionalCcMask(&dst.cc);
+    }
     if (!PeekIs(Tok::Dot)) {
       return Fail(Diag::OperandAddressComponent, {last_end_, last_end_},
                   "ARL needs the write mask '.x' on its address register");
@@ -1758,7 +2016,10 @@ class Parser {
     Advance();
     Token comp;
     if (!ExpectIdent("the address component 'x'", &comp)) return false;
-    if (!Is(Text(comp), "x")) {
+    if (program_->Nv() && Text(comp).size() == 1 &&
+        std::string_view("xyzw").find(Text(comp)[0]) != std::string_view::npos) {
+      src->address_component = static_cast<uint8_t>(std::string_view("xyzw").find(Text(comp)[0]));
+    } else if (!Is(Text(comp), "x")) {
       return Fail(Diag::OperandAddressComponent, RangeOf(comp),
                   fmt::format("address component '{}' is invalid; only '.x' exists", Text(comp)));
     }
@@ -1784,6 +2045,22 @@ class Parser {
     uint32_t begin = Peek().begin;
     bool negate = false;
     if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) negate = Is(Text(Advance()), "-");
+    // <instOperandAbsV> ::= <optSign> "|" <instOperandBaseV> "|": |-x| is |x|.
+    if (PeekIs(Tok::Bar)) {
+      Token bar = Advance();
+      if (!program_->Nv()) {
+        return Fail(Diag::SyntaxNvConstruct, RangeOf(bar),
+                    fmt::format("the absolute value '|operand|' needs OPTION {}",
+                                NvOptionName(vp(), OpLevel::Nv)));
+      }
+      if (PeekIs(Tok::Minus) || PeekIs(Tok::Plus)) Advance();
+      if (!ParseSwizzleSrcReg(scalar, opname, out)) return false;
+      if (!Expect(Tok::Bar, "'|' closing the absolute value")) return false;
+      out->abs = true;
+      out->negate = negate;
+      out->range = {begin, last_end_};
+      return true;
+    }
     SrcOperand& src = *out;
     if (!ParseSrcReg(/*allow_constant=*/true, &src)) return false;
     src.negate = negate;
@@ -1794,6 +2071,8 @@ class Parser {
       if (!ExpectIdent("a swizzle", &swz) || !ParseSwizzle(swz, scalar, opname, &src)) {
         return false;
       }
+    } else if (scalar && program_->Nv() && IsInlineScalar(src)) {
+      // <paramUseS> ::= <constantScalar> under the NV options: no suffix needed.
     } else if (scalar) {
       return Fail(
           Diag::OperandScalarRequired, src.range,
