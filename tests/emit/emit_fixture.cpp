@@ -72,7 +72,11 @@ std::vector<std::string> Statements(const std::string& glsl) {
     if (start == std::string::npos) continue;
     line = line.substr(start);
     if (line.rfind("//", 0) == 0 || line == "}") continue;
-    if (line.rfind("vec4 ", 0) == 0 || line.rfind("int ", 0) == 0) continue;  // locals
+    // Locals: the variables and the NV machine state.
+    if (line.rfind("vec4 ", 0) == 0 || line.rfind("int ", 0) == 0 || line.rfind("ivec", 0) == 0 ||
+        line.rfind("bvec4 ", 0) == 0) {
+      continue;
+    }
     if (line.find("// result.position is never written") != std::string::npos) continue;
     out.push_back(line);
   }

@@ -341,7 +341,9 @@ DestTarget ResultTarget(Context& ctx, const Binding& b) {
       t.lvalue = fmt::format("gl_TexCoord[{}]", b.index);
       break;
     case ResultReg::ClipDistance:
-      // GLSL 1.10 has no clip distances (gl_ClipDistance is 1.30's).
+      // GLSL 1.10 has no clip distances (gl_ClipDistance is 1.30's): a varying of our own
+      // (docs/guide/translate.md).
+      ctx.clip_distances.insert(b.index);
       t = {fmt::format("arb_clip_distance{}", b.index), 0};
       break;
     case ResultReg::FragColor:

@@ -34,7 +34,16 @@ struct Expr {
 using Comps = std::vector<int>;
 
 // Helper functions emitted before main() when a translation needs them.
-enum class Helper : uint8_t { Lit, Exp, Log, Half };
+// A helper's text may call those before it.
+enum class Helper : uint8_t { Lit, Exp, Log, Half, RoundEven, Fp16, Fx12, Rcc, Rfl, Ssg };
+
+// The conversion an NV_fragment_program precision suffix applies to operands and results
+// (3.11.4.2): none (R, fp32), to fp16 (H), to fixed point s1.10 (X).
+enum class Conversion : uint8_t { None, Fp16, Fx12 };
+
+// How the body is laid out (emit_flow.cpp): straight-line statements; IF/LOOP/REP as GLSL
+// if and for blocks; or a program-counter machine, one instruction per step.
+enum class FlowMode : uint8_t { Straight, Structured, Machine };
 
 // Where an instruction's result goes in GLSL.
 struct DestTarget {
@@ -76,7 +85,26 @@ struct Context {
   // OPTION ARB_fog_*: result.color[n] goes to FogColorName(n), fogged at the end of main.
   bool fog_redirect = false;
   std::set<int> fog_colors;  // the result.color[n] written
+
+  // The NV options.
+  // Locals the body needs besides the variables (condition codes, loop state), by name:
+  // their declarations, emitted in name order.
+  std::map<std::string, std::string> nv_locals;
+  Conversion conversion = Conversion::None;  // of the instruction being emitted
+  std::set<int> clip_distances;              // result.clip[n] written
+  bool needs_texture_lod = false;            // GL_ARB_shader_texture_lod functions used
+  FlowMode flow = FlowMode::Straight;
+  int pc = 0;                   // the index of the instruction being emitted
+  std::vector<int> open_loops;  // Structured: the open LOOP blocks' numbers (A0.x: arb_a0_N)
+  int loops = 0;                // Structured: LOOP and REP blocks so far
 };
+
+// NV implementation limits the translation enforces as the reference interpreter does:
+// the minimums of NV_vertex_program2_option and NV_fragment_program2 (tables X.10, X.11).
+inline constexpr int kMaxExecInstructions = 65536;  // MAX_PROGRAM_EXEC_INSTRUCTIONS_NV
+inline constexpr int kMaxCallDepth = 4;             // MAX_PROGRAM_CALL_DEPTH_NV
+inline constexpr int kMaxLoopDepth = 4;             // MAX_PROGRAM_LOOP_DEPTH_NV
+inline constexpr int kMaxLoopCount = 255;           // MAX_PROGRAM_LOOP_COUNT_NV
 
 // The local that holds result.color[n] before fog.
 std::string FogColorName(const Context& ctx, int index);
@@ -108,13 +136,13 @@ std::string SamplerName(int unit);
 std::string SamplerType(TexTarget target);
 
 // emit_operands.cpp: source operands and destination writes.
-// Reads `comps` of the instruction-vector positions of `src` (swizzle, negation, relative
-// addressing, constants folded).
+// Reads `comps` of the instruction-vector positions of `src` (swizzle, |abs|, negation,
+// relative addressing, constants folded, the NV precision conversion).
 Expr Source(Context& ctx, const SrcOperand& src, const Comps& comps);
 // One component of a SWZ operand (0, 1 or a signed component).
 std::string SwizzleComponent(Context& ctx, const SrcOperand& src, int comp);
-// Writes the instruction's result through its write mask (and _SAT): `value(comps)` gives
-// the result components listed.
+// Writes the instruction's result through its write mask (precision, _SAT, _SSAT, storage
+// size, the NV condition codes): `value(comps)` gives the result components listed.
 template <typename F>
 std::string Assign(Context& ctx, const Instruction& inst, F value);
 std::string AssignImpl(Context& ctx, const Instruction& inst,
@@ -122,6 +150,43 @@ std::string AssignImpl(Context& ctx, const Instruction& inst,
 
 // emit_instructions.cpp: one GLSL statement (or a few) per ARB instruction.
 std::string EmitInstruction(Context& ctx, const Instruction& inst);
+
+// emit_flow.cpp: the statements of main() for the program's instructions, laid out as its
+// flow instructions need (sets ctx.flow).
+std::string EmitBody(Context& ctx);
+
+// emit_cc.cpp: the NV condition codes (one vec4 per register holding the last value
+// written to each component: its sign is the code, NaN is UN) and the NV destination
+// update (conditional write mask, C/C0/C1 update).
+std::string CcName(Context& ctx, int reg);
+// The test of `cc` on component `comp` of its swizzle ("arb_cc0.y > 0.0"; "true" for TR).
+std::string CcComponentTest(Context& ctx, const CcTest& cc, int comp);
+// Whether any component of the swizzled test holds (BRA, CAL, RET, BRK, IF, KIL).
+std::string CcAnyTest(Context& ctx, const CcTest& cc);
+// Whether the instruction writes through the NV destination update (a condition code test
+// or update); else AssignImpl's plain assignment does.
+bool NeedsCcWrite(const Instruction& inst);
+// The writes of `result` (the final result components `comps`, through a vec4 local, an
+// ivec4 one when `integer`) under the condition code test, and the condition code update.
+// `lvalue(c)` is the destination of component c ("R0.x"; "gl_FragDepth" or "" for a float
+// result register).
+std::string CcWrite(Context& ctx, const Instruction& inst, const Comps& comps, const Expr& result,
+                    const std::function<std::string(int)>& lvalue, bool integer);
+// Declares an NV local once.
+void DeclareLocal(Context& ctx, const std::string& name, const std::string& declaration);
+
+// emit_precision.cpp: NV_fragment_program precision (3.11.4.2) and storage sizes.
+// The conversion of an instruction's operands and result (its suffix, else its destination's
+// size); Conversion::None outside NV fragment programs.
+Conversion InstructionConversion(const Context& ctx, const Instruction& inst);
+// `e` converted (arb_fp16(e), arb_fx12(e)); `e` itself for Conversion::None.
+Expr Convert(Context& ctx, const Expr& e, Conversion conversion);
+// The storage conversion of a write to `var` (SHORT: fp16) after one at `done`.
+Conversion StorageConversion(const Context& ctx, int var, Conversion done);
+
+// The GLSL of an address register component read by relative addressing (A0.x; the loop
+// index in NV fragment programs).
+std::string AddressComponent(const Context& ctx, const SrcOperand& src);
 
 // emit_helpers.cpp: the text of helper functions and relative-address readers.
 std::string HelperText(const Context& ctx, Helper helper);

@@ -71,6 +71,98 @@ const char* kHalfText =
     "  return vec4(normalize(normalize(d) + vec3(0.0, 0.0, 1.0)), 1.0);\n"
     "}\n";
 
+// The vec2, vec3 and vec4 forms of a float function, component by component.
+std::string VectorForms(const std::string& type, const std::string& name) {
+  std::string out;
+  for (int n = 2; n <= 4; ++n) {
+    std::string parts;
+    for (int c = 0; c < n; ++c) parts += fmt::format("{}{}(v.{})", c ? ", " : "", name, "xyzw"[c]);
+    out += fmt::format("{0}{1} {2}(vec{1} v) {{ return {0}{1}({3}); }}\n", type, n, name, parts);
+  }
+  return out;
+}
+
+// fp16 rounding, exact in float32: every step scales by a power of two.
+std::string Fp16Text() {
+  return "// fp16 (NV_fragment_program 3.11.4.1-2): the nearest half float, ties to even, with\n"
+         "// fp16 denormals (steps of 2^-24 below 2^-14); |x| >= 65520 rounds to infinity;\n"
+         "// NaN, infinities and zeros are unchanged. Exact: every scaling is by a power of 2.\n"
+         "float arb_fp16(float x) {\n"
+         "  float a = abs(x);\n"
+         "  if (a >= 65520.0) return x * 1.0e30 * 1.0e30;\n"
+         "  if (!(a > 0.0)) return x;\n"
+         "  float ulp = 1.0 / 16777216.0;\n"
+         "  float scale = 16777216.0;\n"
+         "  float limit = 1.0 / 8192.0;\n"
+         "  for (int i = 0; i < 29; ++i) {\n"
+         "    if (a >= limit) {\n"
+         "      ulp *= 2.0;\n"
+         "      scale *= 0.5;\n"
+         "      limit *= 2.0;\n"
+         "    }\n"
+         "  }\n"
+         "  float q = a * scale;\n"
+         "  float f = floor(q);\n"
+         "  float d = q - f;\n"
+         "  if (d > 0.5 || (d == 0.5 && fract(f * 0.5) != 0.0)) f += 1.0;\n"
+         "  return (x < 0.0 ? -f : f) * ulp;\n"
+         "}\n" +
+         VectorForms("vec", "arb_fp16");
+}
+
+std::string Fx12Text() {
+  return "// fx12 (NV_fragment_program 3.11.4.2): s1.10 fixed point. Values below -2048/1024 and\n"
+         "// above +2047/1024 (infinities too) become those, NaN becomes 0, and the rest the\n"
+         "// nearest multiple of 1/1024, a tie to the even one.\n"
+         "float arb_fx12(float x) {\n"
+         "  if (x < -2.0) return -2.0;\n"
+         "  if (x > 1.9990234375) return 1.9990234375;\n"
+         "  if (!(x >= -2.0)) return 0.0;\n"
+         "  return arb_round_even(x * 1024.0) * 0.0009765625;\n"
+         "}\n" +
+         VectorForms("vec", "arb_fx12");
+}
+
+std::string RoundEvenText() {
+  return "// ARR (NV_vertex_program2_option 2.14.5.29): the nearest integer, a tie to the even "
+         "one.\n"
+         "float arb_round_even(float x) {\n"
+         "  float f = floor(x);\n"
+         "  float d = x - f;\n"
+         "  return d > 0.5 || (d == 0.5 && fract(f * 0.5) != 0.0) ? f + 1.0 : f;\n"
+         "}\n" +
+         VectorForms("vec", "arb_round_even");
+}
+
+// 2^-64 and 2^64, exactly.
+constexpr float kRccMin = 5.42101086242752217e-20f;
+constexpr float kRccMax = 1.8446744073709552e19f;
+
+std::string RccText() {
+  return fmt::format(
+      "// RCC (NV_vertex_program2_option 2.14.5.33): 1/x clamped to [2^-64, 2^64] when it is\n"
+      "// positive, else to [-2^64, -2^-64].\n"
+      "float arb_rcc(float x) {{\n"
+      "  float r = 1.0 / x;\n"
+      "  if (r > 0.0) return r < {0} ? {0} : (r > {1} ? {1} : r);\n"
+      "  return r > -{0} ? -{0} : (r < -{1} ? -{1} : r);\n"
+      "}}\n",
+      FormatFloat(kRccMin), FormatFloat(kRccMax));
+}
+
+const char* kSsgText =
+    "// SSG (NV_vertex_program2_option 2.14.5.41): 1, 0 or -1 as x is above, at or below 0;\n"
+    "// NaN stays NaN (GLSL's sign() leaves it undefined).\n"
+    "float arb_ssg(float x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : x * 0.0); }\n";
+
+const char* kRflText =
+    "// RFL (NV_fragment_program_option 3.11.5.36): the reflection of d about the axis a,\n"
+    "// 2 (a . d) / (a . a) * a - d, in the specification's order of operations.\n"
+    "vec3 arb_rfl(vec3 a, vec3 d) {\n"
+    "  float k = 2.0 * dot(a, d) / dot(a, a);\n"
+    "  return k * a - d;\n"
+    "}\n";
+
 }  // namespace
 
 std::string HelperText(const Context& ctx, Helper helper) {
@@ -83,6 +175,18 @@ std::string HelperText(const Context& ctx, Helper helper) {
       return LogText(ctx);
     case Helper::Half:
       return kHalfText;
+    case Helper::Fp16:
+      return Fp16Text();
+    case Helper::Fx12:
+      return Fx12Text();
+    case Helper::RoundEven:
+      return RoundEvenText();
+    case Helper::Rcc:
+      return RccText();
+    case Helper::Rfl:
+      return kRflText;
+    case Helper::Ssg:
+      return kSsgText + VectorForms("vec", "arb_ssg");
   }
   return "";
 }

@@ -4,53 +4,13 @@
 #include <fmt/format.h>
 
 #include "emit/emit_context.h"
+#include "emit/emit_flow.h"
 #include "emit/emit_nv.h"
+#include "emit/emit_shapes.h"
+#include "emit/emit_texture.h"
 
 namespace arbiter::arbvp::emit {
 namespace {
-
-const SrcOperand& Src(const Instruction& inst, size_t i) { return inst.src[i]; }
-
-// A component-wise operation: operands narrowed to the written components, so that
-// `ADD t.xz, a, b` becomes `t.xz = a.xz + b.xz;`.
-template <typename F>
-std::string Componentwise(Context& ctx, const Instruction& inst, F op) {
-  return Assign(ctx, inst, [&](const Comps& comps) {
-    std::vector<Expr> a;
-    for (int i = 0; i < inst.src_count; ++i)
-      a.push_back(Source(ctx, Src(inst, static_cast<size_t>(i)), comps));
-    return op(a, static_cast<int>(comps.size()));
-  });
-}
-
-// A scalar operation: the result of one float expression replicated to the written
-// components (ARBvp 2.14.5: "the scalar result is replicated").
-template <typename F>
-std::string ScalarOp(Context& ctx, const Instruction& inst, F op) {
-  return Assign(ctx, inst, [&](const Comps& comps) {
-    std::vector<Expr> a;
-    for (int i = 0; i < inst.src_count; ++i)
-      a.push_back(Source(ctx, Src(inst, static_cast<size_t>(i)), {0}));
-    return Replicate({op(a), 1, false}, static_cast<int>(comps.size()));
-  });
-}
-
-// An operation producing a whole vec4, of which the written components are selected.
-std::string WholeVector(Context& ctx, const Instruction& inst, const Expr& e4) {
-  return Assign(ctx, inst, [&](const Comps& comps) { return Select(e4, comps); });
-}
-
-// An operation defined component by component (`component(c)` gives component c).
-template <typename F>
-std::string PerComponent(Context& ctx, const Instruction& inst, F component) {
-  return Assign(ctx, inst, [&](const Comps& comps) {
-    std::vector<std::string> parts;
-    for (int c : comps) parts.push_back(component(c));
-    return Construct(parts);
-  });
-}
-
-Expr Call(std::string text, int width) { return {std::move(text), width, true}; }
 
 std::string ABS(Context& ctx, const Instruction& inst) {
   return Componentwise(
@@ -64,6 +24,7 @@ std::string ADD(Context& ctx, const Instruction& inst) {
 
 // ARL: A0.x = floor(s) as an integer (ARBvp 2.14.5.3).
 std::string ARL(Context& ctx, const Instruction& inst) {
+  if (ctx.program.Nv()) return ArlNv(ctx, inst);
   std::string a = ctx.var_names[static_cast<size_t>(inst.dst.var)];
   std::string s = Source(ctx, Src(inst, 0), {0}).text;
   if (ctx.Mutated(Mutation::ArlTruncate)) return fmt::format("{} = int({});\n", a, s);
@@ -141,6 +102,8 @@ std::string FRC(Context& ctx, const Instruction& inst) {
 
 // KIL: discard if any component is negative; a NaN is not negative and does not kill.
 std::string KIL(Context& ctx, const Instruction& inst) {
+  // NV_fragment_program_option: KIL <ccTest> kills when the test holds for any component.
+  if (inst.cond.present) return fmt::format("if ({}) discard;\n", CcAnyTest(ctx, inst.cond));
   if (ctx.Mutated(Mutation::KilOnlyX)) {
     return fmt::format("if ({} < 0.0) discard;\n", Source(ctx, Src(inst, 0), {0}).text);
   }
@@ -223,13 +186,6 @@ std::string SCS(Context& ctx, const Instruction& inst) {
   });
 }
 
-// SGE / SLT: 1.0 where the comparison holds, else 0.0 (false for NaN).
-std::string Compare(Context& ctx, const Instruction& inst, const char* op, const char* function) {
-  return Componentwise(ctx, inst, [&](const auto& a, int w) {
-    if (w == 1) return Call(fmt::format("float({} {} {})", a[0].text, op, a[1].text), 1);
-    return Call(fmt::format("vec{}({}({}, {}))", w, function, a[0].text, a[1].text), w);
-  });
-}
 std::string SGE(Context& ctx, const Instruction& inst) {
   if (ctx.Mutated(Mutation::SgeStrict)) return Compare(ctx, inst, ">", "greaterThan");
   return Compare(ctx, inst, ">=", "greaterThanEqual");
@@ -248,85 +204,6 @@ std::string SUB(Context& ctx, const Instruction& inst) {
 // SWZ: a constructor of 0, 1 and signed components.
 std::string SWZ(Context& ctx, const Instruction& inst) {
   return PerComponent(ctx, inst, [&](int c) { return SwizzleComponent(ctx, Src(inst, 0), c); });
-}
-
-// Texture sampling. The coordinate components each target reads; shadow targets take the
-// depth reference from r (ARB_fragment_program_shadow).
-Comps CoordComps(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-      return {0};
-    case TexTarget::Tex2D:
-    case TexTarget::Rect:
-      return {0, 1};
-    case TexTarget::Tex3D:
-    case TexTarget::Cube:
-    case TexTarget::Shadow1D:
-    case TexTarget::Shadow2D:
-    case TexTarget::ShadowRect:
-      return {0, 1, 2};
-  }
-  return {0, 1};
-}
-
-std::string_view SampleFunction(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-      return "texture1D";
-    case TexTarget::Tex2D:
-      return "texture2D";
-    case TexTarget::Tex3D:
-      return "texture3D";
-    case TexTarget::Cube:
-      return "textureCube";
-    case TexTarget::Rect:
-      return "texture2DRect";
-    case TexTarget::Shadow1D:
-      return "shadow1D";
-    case TexTarget::Shadow2D:
-      return "shadow2D";
-    case TexTarget::ShadowRect:
-      return "shadow2DRect";
-  }
-  return "texture2D";
-}
-
-enum class SampleKind { Plain, Projective, Bias };
-
-std::string Sample(Context& ctx, const Instruction& inst, SampleKind kind) {
-  if (kind == SampleKind::Projective && ctx.Mutated(Mutation::TxpNoDivide))
-    kind = SampleKind::Plain;
-  TexTarget target = inst.target;
-  ctx.samplers[inst.tex_unit] = target;
-  if (target == TexTarget::Rect || target == TexTarget::ShadowRect) ctx.needs_rect = true;
-  std::string sampler = SamplerName(inst.tex_unit);
-  std::string f(SampleFunction(target));
-  const SrcOperand& coord = Src(inst, 0);
-  std::string text;
-  if (kind == SampleKind::Projective && target == TexTarget::Cube) {
-    // GLSL has no textureCubeProj: divide s, t, r by q ourselves.
-    text = fmt::format("{}({}, {} / {})", f, sampler, Source(ctx, coord, {0, 1, 2}).text,
-                       Source(ctx, coord, {3}).text);
-  } else if (kind == SampleKind::Projective) {
-    // The ...Proj functions with a vec4 divide the coordinates (and r) by q.
-    text = fmt::format("{}Proj({}, {})", f, sampler, Source(ctx, coord, AllComps()).text);
-  } else {
-    text = fmt::format("{}({}, {}", f, sampler, Source(ctx, coord, CoordComps(target)).text);
-    // TXB: w is the LOD bias. Rectangle textures have no mipmaps and GLSL no bias form.
-    bool rect = target == TexTarget::Rect || target == TexTarget::ShadowRect;
-    if (kind == SampleKind::Bias && !rect) text += ", " + Source(ctx, coord, {3}).text;
-    text += ")";
-  }
-  return WholeVector(ctx, inst, Call(text, 4));
-}
-std::string TEX(Context& ctx, const Instruction& inst) {
-  return Sample(ctx, inst, SampleKind::Plain);
-}
-std::string TXB(Context& ctx, const Instruction& inst) {
-  return Sample(ctx, inst, SampleKind::Bias);
-}
-std::string TXP(Context& ctx, const Instruction& inst) {
-  return Sample(ctx, inst, SampleKind::Projective);
 }
 
 // XPD: the cross product of a.xyz and b.xyz; w is undefined by the spec: we write 1.0
@@ -355,7 +232,10 @@ constexpr EmitFn kEmitters[] = {
 }  // namespace
 
 std::string EmitInstruction(Context& ctx, const Instruction& inst) {
-  return kEmitters[static_cast<size_t>(inst.op)](ctx, inst);
+  ctx.conversion = InstructionConversion(ctx, inst);
+  std::string out = kEmitters[static_cast<size_t>(inst.op)](ctx, inst);
+  ctx.conversion = Conversion::None;
+  return out;
 }
 
 }  // namespace arbiter::arbvp::emit

@@ -1,58 +1,219 @@
-// The GLSL of the NV instructions (emit_nv.h).
+// The GLSL of the NV ALU instructions (emit_nv.h), each with the exact semantics of its
+// specification section (NV_vertex_program2_option 2.14.5.28-42, NV_fragment_program_option
+// 3.11.5.30-47, NV_fragment_program2 3.11.5.48-51).
 #include "emit/emit_nv.h"
 
 #include <fmt/format.h>
 
+#include "emit/emit_shapes.h"
+
 namespace arbiter::arbvp::emit {
 namespace {
 
-// Not translated yet: a line GLSL rejects, so no translation passes for a working one.
-std::string NotTranslated(std::string_view name) {
-  return fmt::format("#error {} is not translated yet\n", name);
+// The pack and unpack instructions read or form the raw bits of a float32, and GLSL 1.10
+// has no bit casts (floatBitsToUint is GLSL 3.30's, and no extension of GL 2.x adds it).
+// Arithmetic cannot stand in for them: packed bytes make NaN payloads and denormals, which
+// float arithmetic neither keeps nor forms. The translation refuses them with a line GLSL
+// rejects, naming the instruction.
+std::string Refused(std::string_view name) {
+  return fmt::format(
+      "#error arbiter cannot translate {} to GLSL 1.10: it needs the bits of a float "
+      "(floatBitsToUint, GLSL 3.30), which GLSL 1.10 cannot form exactly\n",
+      name);
+}
+
+// A constant result replicated to the written components (SFL, STR).
+std::string Constant(Context& ctx, const Instruction& inst, const char* value) {
+  return Assign(ctx, inst, [&](const Comps& comps) {
+    return Replicate({value, 1, true}, static_cast<int>(comps.size()));
+  });
+}
+
+// A dot product replicated to the written components.
+std::string DotOf(Context& ctx, const Instruction& inst, const std::string& dot) {
+  return Assign(ctx, inst, [&](const Comps& comps) {
+    return Replicate({dot, 1, false}, static_cast<int>(comps.size()));
+  });
+}
+
+std::string AddressName(const Context& ctx, int var) {
+  return ctx.var_names[static_cast<size_t>(var)];
 }
 
 }  // namespace
 
-std::string ARA(Context&, const Instruction&) { return NotTranslated("ARA"); }
-std::string ARR(Context&, const Instruction&) { return NotTranslated("ARR"); }
-std::string BRA(Context&, const Instruction&) { return NotTranslated("BRA"); }
-std::string BRK(Context&, const Instruction&) { return NotTranslated("BRK"); }
-std::string CAL(Context&, const Instruction&) { return NotTranslated("CAL"); }
-std::string DDX(Context&, const Instruction&) { return NotTranslated("DDX"); }
-std::string DDY(Context&, const Instruction&) { return NotTranslated("DDY"); }
-std::string DIV(Context&, const Instruction&) { return NotTranslated("DIV"); }
-std::string DP2(Context&, const Instruction&) { return NotTranslated("DP2"); }
-std::string DP2A(Context&, const Instruction&) { return NotTranslated("DP2A"); }
-std::string ELSE(Context&, const Instruction&) { return NotTranslated("ELSE"); }
-std::string ENDIF(Context&, const Instruction&) { return NotTranslated("ENDIF"); }
-std::string ENDLOOP(Context&, const Instruction&) { return NotTranslated("ENDLOOP"); }
-std::string ENDREP(Context&, const Instruction&) { return NotTranslated("ENDREP"); }
-std::string IF(Context&, const Instruction&) { return NotTranslated("IF"); }
-std::string LOOP(Context&, const Instruction&) { return NotTranslated("LOOP"); }
-std::string NRM(Context&, const Instruction&) { return NotTranslated("NRM"); }
-std::string PK2H(Context&, const Instruction&) { return NotTranslated("PK2H"); }
-std::string PK2US(Context&, const Instruction&) { return NotTranslated("PK2US"); }
-std::string PK4B(Context&, const Instruction&) { return NotTranslated("PK4B"); }
-std::string PK4UB(Context&, const Instruction&) { return NotTranslated("PK4UB"); }
-std::string POPA(Context&, const Instruction&) { return NotTranslated("POPA"); }
-std::string PUSHA(Context&, const Instruction&) { return NotTranslated("PUSHA"); }
-std::string RCC(Context&, const Instruction&) { return NotTranslated("RCC"); }
-std::string REP(Context&, const Instruction&) { return NotTranslated("REP"); }
-std::string RET(Context&, const Instruction&) { return NotTranslated("RET"); }
-std::string RFL(Context&, const Instruction&) { return NotTranslated("RFL"); }
-std::string SEQ(Context&, const Instruction&) { return NotTranslated("SEQ"); }
-std::string SFL(Context&, const Instruction&) { return NotTranslated("SFL"); }
-std::string SGT(Context&, const Instruction&) { return NotTranslated("SGT"); }
-std::string SLE(Context&, const Instruction&) { return NotTranslated("SLE"); }
-std::string SNE(Context&, const Instruction&) { return NotTranslated("SNE"); }
-std::string SSG(Context&, const Instruction&) { return NotTranslated("SSG"); }
-std::string STR(Context&, const Instruction&) { return NotTranslated("STR"); }
-std::string TXD(Context&, const Instruction&) { return NotTranslated("TXD"); }
-std::string TXL(Context&, const Instruction&) { return NotTranslated("TXL"); }
-std::string UP2H(Context&, const Instruction&) { return NotTranslated("UP2H"); }
-std::string UP2US(Context&, const Instruction&) { return NotTranslated("UP2US"); }
-std::string UP4B(Context&, const Instruction&) { return NotTranslated("UP4B"); }
-std::string UP4UB(Context&, const Instruction&) { return NotTranslated("UP4UB"); }
-std::string X2D(Context&, const Instruction&) { return NotTranslated("X2D"); }
+// The components of an address register: ivec4 in NV vertex programs (2.14.3.5: "a set of
+// four-component signed integer vectors"); NV_fragment_program2's A0.x is the loop index of
+// the innermost LOOP block, "clamped to be greater than or equal to 0" (3.11.3.Y).
+std::string AddressComponent(const Context& ctx, const SrcOperand& src) {
+  if (!ctx.IsVertex()) {
+    std::string index = ctx.flow == FlowMode::Machine ? "arb_a0"
+                        : ctx.open_loops.empty()      ? "0"
+                                                 : fmt::format("arb_a0_{}", ctx.open_loops.back());
+    return fmt::format("max({}, 0)", index);
+  }
+  std::string name = AddressName(ctx, src.address_var);
+  if (!ctx.program.Nv()) return name;
+  return fmt::format("{}.{}", name, "xyzw"[src.address_component & 3]);
+}
+
+std::string AssignAddress(Context& ctx, const Instruction& inst,
+                          const std::function<std::string(const Comps&)>& value) {
+  const std::string a = AddressName(ctx, inst.dst.var);
+  Comps comps;
+  for (int c = 0; c < 4; ++c) {
+    if (inst.dst.mask & (1u << c)) comps.push_back(c);
+  }
+  const std::string v = value(comps);
+  if (NeedsCcWrite(inst)) {
+    return CcWrite(
+        ctx, inst, comps, {v, static_cast<int>(comps.size()), true},
+        [&](int c) { return fmt::format("{}.{}", a, "xyzw"[c]); }, true);
+  }
+  if (comps == AllComps()) return fmt::format("{} = {};\n", a, v);
+  return fmt::format("{}.{} = {};\n", a, Letters(comps), v);
+}
+
+// An address result: "each component of the result vector is clamped to [-512, +511], the
+// range of representable address register components" (NV_vertex_program2 2.14.5.2). GLSL
+// 1.10 clamps floats only.
+std::string AddressResult(const std::string& v, const Comps& comps) {
+  if (comps.size() == 1) return fmt::format("int(clamp({}, -512.0, 511.0))", v);
+  return fmt::format("ivec{}(clamp({}, -512.0, 511.0))", comps.size(), v);
+}
+
+// ARA: (x + z, y + w, x + z, y + w) of the address register operand.
+std::string ARA(Context& ctx, const Instruction& inst) {
+  const std::string a = AddressName(ctx, Src(inst, 0).var);
+  return AssignAddress(ctx, inst, [&](const Comps& comps) {
+    std::string sum = fmt::format("vec4({0}.xyxy + {0}.zwzw)", a);
+    return AddressResult(comps == AllComps() ? sum : fmt::format("{}.{}", sum, Letters(comps)),
+                         comps);
+  });
+}
+
+// ARL under NV_vertex_program2: "a component-wise floor operation to generate a signed
+// integer result vector".
+std::string ArlNv(Context& ctx, const Instruction& inst) {
+  return AssignAddress(ctx, inst, [&](const Comps& comps) {
+    return AddressResult(fmt::format("floor({})", Source(ctx, Src(inst, 0), comps).text), comps);
+  });
+}
+
+// ARR: round to nearest, "if the fractional portion of the operand is 0.5, round() selects
+// the nearest even integer" (GLSL 1.10 has no roundEven: see arb_round_even).
+std::string ARR(Context& ctx, const Instruction& inst) {
+  ctx.helpers.insert(Helper::RoundEven);
+  return AssignAddress(ctx, inst, [&](const Comps& comps) {
+    return AddressResult(fmt::format("arb_round_even({})", Source(ctx, Src(inst, 0), comps).text),
+                         comps);
+  });
+}
+
+// DDX, DDY: "approximate partial derivatives ... with respect to the X (Y) window
+// coordinate", which is what dFdx and dFdy compute.
+std::string DDX(Context& ctx, const Instruction& inst) {
+  return Componentwise(
+      ctx, inst, [](const auto& a, int w) { return Call(fmt::format("dFdx({})", a[0].text), w); });
+}
+std::string DDY(Context& ctx, const Instruction& inst) {
+  return Componentwise(
+      ctx, inst, [](const auto& a, int w) { return Call(fmt::format("dFdy({})", a[0].text), w); });
+}
+
+// DIV: each component of the vector divided by the scalar.
+std::string DIV(Context& ctx, const Instruction& inst) {
+  return Assign(ctx, inst, [&](const Comps& comps) {
+    Expr a = Source(ctx, Src(inst, 0), comps);
+    Expr s = Source(ctx, Src(inst, 1), {0});
+    return Expr{fmt::format("{} / {}", a.text, s.atomic ? s.text : "(" + s.text + ")"),
+                static_cast<int>(comps.size()), false};
+  });
+}
+
+// DP2: a.x * b.x + a.y * b.y; DP2A adds c.x.
+std::string DP2(Context& ctx, const Instruction& inst) {
+  return DotOf(ctx, inst,
+               fmt::format("dot({}, {})", Source(ctx, Src(inst, 0), {0, 1}).text,
+                           Source(ctx, Src(inst, 1), {0, 1}).text));
+}
+std::string DP2A(Context& ctx, const Instruction& inst) {
+  return DotOf(
+      ctx, inst,
+      fmt::format("dot({}, {}) + {}", Source(ctx, Src(inst, 0), {0, 1}).text,
+                  Source(ctx, Src(inst, 1), {0, 1}).text, Source(ctx, Src(inst, 2), {0}).text));
+}
+
+// NRM: xyz * rsq(xyz . xyz); "the w component of the result is undefined": we write 1.0,
+// as XPD's w.
+std::string NRM(Context& ctx, const Instruction& inst) {
+  std::string v = Source(ctx, Src(inst, 0), {0, 1, 2}).text;
+  return WholeVector(ctx, inst,
+                     Call(fmt::format("vec4({0} * inversesqrt(dot({0}, {0})), 1.0)", v), 4));
+}
+
+std::string PK2H(Context&, const Instruction&) { return Refused("PK2H"); }
+std::string PK2US(Context&, const Instruction&) { return Refused("PK2US"); }
+std::string PK4B(Context&, const Instruction&) { return Refused("PK4B"); }
+std::string PK4UB(Context&, const Instruction&) { return Refused("PK4UB"); }
+
+// RCC: the reciprocal clamped to [2^-64, 2^64] or [-2^64, -2^-64] (see arb_rcc).
+std::string RCC(Context& ctx, const Instruction& inst) {
+  ctx.helpers.insert(Helper::Rcc);
+  return ScalarOp(ctx, inst, [](const auto& a) { return fmt::format("arb_rcc({})", a[0].text); });
+}
+
+// RFL: the direction b reflected about the axis a (see arb_rfl; GLSL's reflect() takes a
+// unit normal and the opposite sign). The w component cannot be written.
+std::string RFL(Context& ctx, const Instruction& inst) {
+  ctx.helpers.insert(Helper::Rfl);
+  Expr e3 = Call(fmt::format("arb_rfl({}, {})", Source(ctx, Src(inst, 0), {0, 1, 2}).text,
+                             Source(ctx, Src(inst, 1), {0, 1, 2}).text),
+                 3);
+  return Assign(ctx, inst, [&](const Comps& comps) {
+    if (comps == Comps{0, 1, 2}) return e3;
+    return Select(e3, comps);
+  });
+}
+
+// The "set on" comparisons: 1.0 where the comparison holds, else 0.0; SFL and STR compare
+// nothing.
+std::string SEQ(Context& ctx, const Instruction& inst) { return Compare(ctx, inst, "==", "equal"); }
+std::string SFL(Context& ctx, const Instruction& inst) { return Constant(ctx, inst, "0.0"); }
+std::string SGT(Context& ctx, const Instruction& inst) {
+  return Compare(ctx, inst, ">", "greaterThan");
+}
+std::string SLE(Context& ctx, const Instruction& inst) {
+  return Compare(ctx, inst, "<=", "lessThanEqual");
+}
+std::string SNE(Context& ctx, const Instruction& inst) {
+  return Compare(ctx, inst, "!=", "notEqual");
+}
+std::string STR(Context& ctx, const Instruction& inst) { return Constant(ctx, inst, "1.0"); }
+
+// SSG: 1.0, 0.0 or -1.0 as the component is positive, zero or negative (arb_ssg: GLSL's
+// sign() leaves NaN undefined).
+std::string SSG(Context& ctx, const Instruction& inst) {
+  ctx.helpers.insert(Helper::Ssg);
+  return Componentwise(ctx, inst, [](const auto& a, int w) {
+    return Call(fmt::format("arb_ssg({})", a[0].text), w);
+  });
+}
+
+std::string UP2H(Context&, const Instruction&) { return Refused("UP2H"); }
+std::string UP2US(Context&, const Instruction&) { return Refused("UP2US"); }
+std::string UP4B(Context&, const Instruction&) { return Refused("UP4B"); }
+std::string UP4UB(Context&, const Instruction&) { return Refused("UP4UB"); }
+
+// X2D: a.xy + (b.x * c.x + b.y * c.y, b.x * c.z + b.y * c.w), written to (x, y, x, y) in
+// the specification's order of operations.
+std::string X2D(Context& ctx, const Instruction& inst) {
+  return PerComponent(ctx, inst, [&](int c) {
+    auto s = [&](size_t i, int comp) { return Source(ctx, Src(inst, i), {comp}).text; };
+    const bool x = c == 0 || c == 2;
+    return fmt::format("{} + {} * {} + {} * {}", s(0, x ? 0 : 1), s(1, 0), s(2, x ? 0 : 2), s(1, 1),
+                       s(2, x ? 1 : 3));
+  });
+}
 
 }  // namespace arbiter::arbvp::emit

@@ -1,6 +1,8 @@
-// Source operands (swizzle, negation, relative addressing, folded constants) and
-// destination writes (write mask, _SAT).
+// Source operands (swizzle, |abs|, negation, relative addressing, folded constants, NV
+// precision) and destination writes (write mask, _SAT, _SSAT, NV precision and condition codes).
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "emit/emit_context.h"
 
@@ -17,6 +19,7 @@ Expr FoldConstant(const Context& ctx, const Binding& b, const SrcOperand& src, c
   for (int c : comps) {
     Swz s = src.swizzle[static_cast<size_t>(c)];
     float v = s == Swz::Zero ? 0.0f : s == Swz::One ? 1.0f : b.value[static_cast<size_t>(s)];
+    if (src.abs) v = std::fabs(v);
     values.push_back(Negated(ctx, src) ? -v : v);
   }
   bool same = true;
@@ -30,15 +33,14 @@ Expr FoldConstant(const Context& ctx, const Binding& b, const SrcOperand& src, c
 
 // A relative offset A0.x + k as GLSL int arithmetic.
 std::string RelativeIndex(const Context& ctx, const SrcOperand& src) {
-  std::string a = ctx.var_names[static_cast<size_t>(src.address_var)];
+  std::string a = AddressComponent(ctx, src);
   if (src.index > 0) return fmt::format("{} + {}", a, src.index);
   if (src.index < 0) return fmt::format("{} - {}", a, -src.index);
   return a;
 }
 
-}  // namespace
-
-Expr Source(Context& ctx, const SrcOperand& src, const Comps& comps) {
+// The operand before the conversion to the instruction's precision.
+Expr Load(Context& ctx, const SrcOperand& src, const Comps& comps) {
   const Variable& var = ctx.program.vars[static_cast<size_t>(src.var)];
   Expr base;
   switch (var.kind) {
@@ -78,8 +80,17 @@ Expr Source(Context& ctx, const SrcOperand& src, const Comps& comps) {
     out = {(base.atomic ? base.text : "(" + base.text + ")") + "." + letters,
            static_cast<int>(comps.size()), true};
   }
+  if (src.abs) out = {fmt::format("abs({})", out.text), out.width, true};
   if (Negated(ctx, src)) out = {"-" + out.text, out.width, false};
   return out;
+}
+
+}  // namespace
+
+// The NV operand modifiers after the swizzle: |abs|, then the sign, then the conversion to
+// the instruction's precision (NV_fragment_program 3.11.4.3, VectorLoad).
+Expr Source(Context& ctx, const SrcOperand& src, const Comps& comps) {
+  return Convert(ctx, Load(ctx, src, comps), ctx.conversion);
 }
 
 // SWZ: each component is 0, 1 or a source component, with its own sign (ARBvp 2.14.5.26).
@@ -109,24 +120,41 @@ std::string AssignImpl(Context& ctx, const Instruction& inst,
     target = ResultTarget(ctx, var.bindings.at(0));
   }
   uint8_t mask = ctx.Mutated(Mutation::WriteMaskIgnored) ? 0xF : inst.dst.mask;
-  auto saturate = [&](Expr e) {
-    if (!inst.saturate || ctx.Mutated(Mutation::SaturateDropped)) return e;
-    return Expr{fmt::format("clamp({}, 0.0, 1.0)", e.text), e.width, true};
+  // The result at the instruction's precision, clamped (_SAT [0, 1], _SSAT [-1, 1]), then
+  // converted to the destination's storage (NV_fragment_program 3.11.4.4).
+  auto finish = [&](Expr e) {
+    e = Convert(ctx, e, ctx.conversion);
+    if (inst.saturate && !ctx.Mutated(Mutation::SaturateDropped)) {
+      e = Expr{fmt::format("clamp({}, 0.0, 1.0)", e.text), e.width, true};
+    }
+    if (inst.signed_saturate) e = Expr{fmt::format("clamp({}, -1.0, 1.0)", e.text), e.width, true};
+    return Convert(ctx, e, StorageConversion(ctx, inst.dst.var, ctx.conversion));
   };
+  Comps comps;
+  for (int c = 0; c < 4; ++c) {
+    if (mask & (1u << c)) comps.push_back(c);
+  }
+  if (NeedsCcWrite(inst)) {
+    // Every enabled component updates the condition code, even those a float result
+    // register does not keep.
+    return CcWrite(
+        ctx, inst, comps, finish(value(comps)),
+        [&](int c) -> std::string {
+          if (target.scalar_component < 0) return fmt::format("{}.{}", target.lvalue, "xyzw"[c]);
+          return c == target.scalar_component ? target.lvalue : "";
+        },
+        false);
+  }
   if (target.scalar_component >= 0) {
     // A float result register takes one component of the ARB result, if written.
     if (!(mask & (1u << target.scalar_component))) {
       return fmt::format("// (component {} of {} is not written)\n",
                          "xyzw"[target.scalar_component], target.lvalue);
     }
-    Expr e = saturate(value({target.scalar_component}));
+    Expr e = finish(value({target.scalar_component}));
     return fmt::format("{} = {};\n", target.lvalue, e.text);
   }
-  Comps comps;
-  for (int c = 0; c < 4; ++c) {
-    if (mask & (1u << c)) comps.push_back(c);
-  }
-  Expr e = saturate(value(comps));
+  Expr e = finish(value(comps));
   if (comps.size() == 4) return fmt::format("{} = {};\n", target.lvalue, e.text);
   return fmt::format("{}.{} = {};\n", target.lvalue, Letters(comps), e.text);
 }

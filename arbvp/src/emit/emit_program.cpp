@@ -89,11 +89,7 @@ std::string EmitShader(Context& ctx) {
                       p.HasOption(OptionId::FogExp2));
 
   // The body first: it records what the declarations must provide.
-  std::string body;
-  for (const Instruction& inst : p.instructions) {
-    if (ctx.options.comments) body += "// " + InstructionComment(ctx, inst) + "\n";
-    body += EmitInstruction(ctx, inst);
-  }
+  std::string body = EmitBody(ctx);
   // Appended piece by piece: GCC 12 at -O3 reads `s += "\n" + t` as an overlapping copy (a
   // false -Wrestrict in std::string).
   if (ctx.fog_redirect) {
@@ -108,7 +104,15 @@ std::string EmitShader(Context& ctx) {
     const Variable& v = p.vars[i];
     const std::string& name = ctx.var_names[i];
     if (v.kind == VarKind::Temp) locals += fmt::format("vec4 {} = vec4(0.0);\n", name);
-    if (v.kind == VarKind::Address) locals += fmt::format("int {} = 0;\n", name);
+    if (v.kind == VarKind::Address) {
+      // NV_vertex_program2 address registers are ivec4 (2.14.3.5).
+      locals +=
+          p.Nv() ? fmt::format("ivec4 {} = ivec4(0);\n", name) : fmt::format("int {} = 0;\n", name);
+    }
+  }
+  for (const auto& [name, declaration] : ctx.nv_locals) locals += declaration + "\n";
+  for (int n : ctx.clip_distances) {
+    locals += fmt::format("arb_clip_distance{} = 0.0;  // result.clip[{}] starts at 0\n", n, n);
   }
   for (int n : ctx.fog_colors) {
     locals +=
@@ -143,6 +147,7 @@ std::string EmitShader(Context& ctx) {
 
   std::string out = "#version 110\n";
   if (ctx.needs_rect) out += "#extension GL_ARB_texture_rectangle : require\n";
+  if (ctx.needs_texture_lod) out += "#extension GL_ARB_shader_texture_lod : require\n";
   const std::string frag_coord = FragCoordLayout(p);
   if (!frag_coord.empty()) out += "#extension GL_ARB_fragment_coord_conventions : require\n";
   out += fmt::format("// ARB {} program translated to GLSL 1.10 by arbiter.\n",
@@ -179,6 +184,11 @@ std::string EmitShader(Context& ctx) {
   for (const auto& [unit, target] : ctx.samplers) {
     decls += fmt::format("uniform {} {};  // texture[{}], {}\n", SamplerType(target),
                          SamplerName(unit), unit, TexTargetName(target));
+  }
+  for (int n : ctx.clip_distances) {
+    decls += fmt::format(
+        "varying float arb_clip_distance{};  // result.clip[{}]: GLSL 1.10 has no clip distances\n",
+        n, n);
   }
   decls += globals;
   if (!decls.empty()) {
