@@ -30,6 +30,9 @@ const Golden kGoldens[] = {
     {"draw-buffers", nullptr, "tests/emit/golden/inputs/draw-buffers-fog.fp"},
     {"fragment-ops", nullptr, "tests/emit/golden/inputs/fragment-ops.fp"},
     {"pair", "tests/emit/golden/inputs/pair.vp", "tests/emit/golden/inputs/pair.fp"},
+    {"nv-vertex", "tests/emit/golden/inputs/nv-vertex.vp", nullptr},
+    {"nv-fragment", nullptr, "tests/emit/golden/inputs/nv-fragment.fp"},
+    {"nv-flow", nullptr, "tests/emit/golden/inputs/nv-flow.fp"},
 };
 
 void PrintTo(const Golden& g, std::ostream* os) { *os << g.name; }
