@@ -1,0 +1,15 @@
+!!ARBfp1.0
+# NV_fragment_program: half precision, condition codes, conditional writes, KIL on a test, packing (NV_fragment_program_option)
+OPTION NV_fragment_program;
+SHORT TEMP h;
+LONG TEMP l;
+TEX l, fragment.texcoord[0], texture[0], 2D;
+MULH h, l, fragment.color;
+SUBC l, h, 0.5;
+KIL LT.w;
+MOV result.color, h;
+MOV result.color.xyz (GT.xyzw), l;
+PK2H l.x, fragment.texcoord[1];
+UP2H result.color.w, l.x;
+DDX h, fragment.texcoord[0];
+END
