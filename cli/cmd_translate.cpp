@@ -100,6 +100,11 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
                          ? job.vertex->input.display_path + " + " + job.fragment->input.display_path
                      : job.vertex ? job.vertex->input.display_path
                                   : job.fragment->input.display_path;
+  if (!t.ok && t.refused) {
+    outcome.err = fmt::format("{}:{}\n", name, t.error);
+    outcome.exit = Exit::Rejected;
+    return outcome;
+  }
   if (!t.ok) {
     outcome.err = fmt::format(
         "arbiter: internal error: the translation of {} is not valid GLSL 1.10 ({}); "

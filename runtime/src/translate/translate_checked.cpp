@@ -26,6 +26,17 @@ CheckedTranslation EmitTranslation(const arbvp::Program* vertex, const arbvp::Pr
                                    const compiler::SourceFile* vertex_source,
                                    const compiler::SourceFile* fragment_source) {
   CheckedTranslation out;
+  for (const auto& [program, source] :
+       {std::pair{vertex, vertex_source}, {fragment, fragment_source}}) {
+    if (!program) continue;
+    arbvp::Untranslatable u = arbvp::FindUntranslatable(*program);
+    if (u.what.empty()) continue;
+    compiler::LineCol at = source ? source->Locate(u.range.begin) : compiler::LineCol{};
+    out.error = fmt::format("{}:{}: error: {}; arbiter cannot translate this program to GLSL 1.10",
+                            at.line, at.column, u.what);
+    out.refused = true;
+    return out;
+  }
   if (vertex && fragment) {
     arbvp::PairTranslation pair =
         arbvp::EmitGlslPair(*vertex, *fragment, options, vertex_source, fragment_source);

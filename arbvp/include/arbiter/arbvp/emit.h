@@ -125,6 +125,15 @@ std::string BindingMapToJson(const BindingMap& map);
 // ---------------------------------------------------------------------------------------
 // Translation.
 
+// The first instruction GLSL 1.10 cannot express exactly, which the translation refuses:
+// the NV pack and unpack instructions (PK2H ... UP4UB) form or read the bits of a float,
+// and GLSL 1.10 has no bit casts. `what` is empty when the program translates.
+struct Untranslatable {
+  std::string what;  // "PK2H needs the bits of a float (floatBitsToUint, GLSL 3.30)"
+  Range range;       // the instruction
+};
+Untranslatable FindUntranslatable(const Program& program);
+
 struct Translation {
   std::string glsl;  // a vertex shader for a vertex program, a fragment shader otherwise
   BindingMap bindings;

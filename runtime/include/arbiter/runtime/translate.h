@@ -19,6 +19,9 @@ struct CheckedTranslation {
   // When !ok: what glslang said about the translation, lower case, with the shader text's
   // line ("the GLSL vertex shader does not compile: 12:5: 'x' : undeclared identifier").
   std::string error;
+  // When !ok because the program uses a construct GLSL 1.10 cannot express (error names it,
+  // with its position): a refusal, not a translator bug.
+  bool refused = false;
 };
 
 // Translates a vertex program, a fragment program, or both as a pair (either may be null,
