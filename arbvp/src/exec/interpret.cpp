@@ -16,7 +16,10 @@
 
 #include "arbiter/arbvp/deviations.h"
 #include "exec/machine.h"
+#include "exec/nv_flow.h"
 #include "exec/ops.h"
+#include "exec/ops_nv.h"
+#include "exec/precision.h"
 #include "exec/state_internal.h"
 #include "exec/tolerance.h"
 
@@ -190,34 +193,28 @@ class Run {
  public:
   Run(const Program& program, const ExecInputs& inputs, const compiler::SourceFile* source,
       Reasons* reasons)
-      : program_(program), inputs_(inputs), source_(source), reasons_(reasons) {}
+      : program_(program),
+        inputs_(inputs),
+        source_(source),
+        reasons_(reasons),
+        nv_(program, reasons) {}
 
   // Executes with the attribute values `attrib` (one per variable; only Attrib ones used).
+  // An ARB program runs its instructions in order; one with an NV option follows its flow
+  // instructions from the label "main" (nv_flow.h).
   void Execute(const std::vector<Reg>& attrib) {
     attrib_ = &attrib;
     Setup();
-    const bool shadow = program_.HasOption(OptionId::FragmentProgramShadow);
-    for (const Instruction& inst : program_.instructions) {
-      exec::OpContext ctx;
-      ctx.inst = &inst;
-      ctx.reasons = reasons_;
-      ctx.where = Where(source_, inst.range);
-      ctx.textures = &inputs_.textures;
-      ctx.shadow_option = shadow;
-      ctx.killed = killed_;
-      ctx.killed_defined = killed_defined_;
-      ctx.kill_why = kill_why_;
-      ctx.kill_unstable = kill_unstable_;
-      ctx.kill_dev = kill_dev_;
-      for (size_t s = 0; s < inst.src_count; ++s) ctx.src[s] = Load(inst.src[s], ctx.where);
-      Reg result = exec::Execute(inst.op, ctx);
-      killed_ = ctx.killed;
-      killed_defined_ = ctx.killed_defined;
-      kill_why_ = ctx.kill_why;
-      kill_unstable_ = ctx.kill_unstable;
-      kill_dev_ = ctx.kill_dev;
-      Store(inst, result);
+    const bool nv = program_.Nv();
+    const int end = static_cast<int>(program_.instructions.size());
+    int pc = nv ? nv_.Entry() : 0;
+    while (pc >= 0 && pc < end) {
+      const Instruction& inst = program_.instructions[static_cast<size_t>(pc)];
+      const std::string where = Where(source_, inst.range);
+      if (nv && !nv_.Count(where)) break;
+      if (!Step(inst, where, &pc)) break;
     }
+    FoldTaint();
   }
 
   Outputs& outputs() { return outputs_; }
@@ -232,12 +229,127 @@ class Run {
     return program_.kind == ProgramKind::Vertex ? inputs_.vertex_params : inputs_.fragment_params;
   }
 
+  exec::OpContext Context(const Instruction& inst, const std::string& where) {
+    exec::OpContext ctx;
+    ctx.inst = &inst;
+    ctx.kind = program_.kind;
+    ctx.reasons = reasons_;
+    ctx.where = where;
+    ctx.textures = &inputs_.textures;
+    ctx.shadow_option = program_.HasOption(OptionId::FragmentProgramShadow);
+    ctx.killed = killed_;
+    ctx.killed_defined = killed_defined_;
+    ctx.kill_why = kill_why_;
+    ctx.kill_unstable = kill_unstable_;
+    ctx.kill_dev = kill_dev_;
+    for (size_t s = 0; s < inst.src_count; ++s) ctx.src[s] = Load(inst.src[s], where);
+    return ctx;
+  }
+
+  // Executes the instruction at *pc and moves *pc on; false when the program terminates.
+  bool Step(const Instruction& inst, const std::string& where, int* pc) {
+    exec::OpContext ctx = Context(inst, where);
+    const OpClass klass = GetOpcodeInfo(inst.op).klass;
+    if (klass == OpClass::Flow) return nv_.Step(inst, ctx.src[0], pc, where);
+    ++*pc;
+    switch (inst.op) {
+      case Opcode::PUSHA:
+        return nv_.Push(ctx.src[0], where);
+      case Opcode::POPA: {
+        Reg popped{};
+        if (!nv_.Pop(&popped, where)) return false;
+        Store(inst, popped, where);
+        return true;
+      }
+      case Opcode::KIL:
+        Kill(inst, ctx);
+        return true;
+      default:
+        break;
+    }
+    const bool nv_arl = inst.op == Opcode::ARL && program_.Nv();
+    Reg result = nv_arl ? exec::OpArlNv(ctx) : exec::Execute(inst.op, ctx);
+    const Precision precision = OperationPrecision(inst);
+    if (precision == Precision::H || precision == Precision::X) {
+      result = exec::AtPrecision(inst.op, ctx, precision, result);
+    }
+    Store(inst, result, where);
+    return true;
+  }
+
+  // KIL with an operand (ops.cpp) or, under the NV options, a condition code test. A KIL
+  // reached through a flow decision on an undefined or unstable condition decides nothing
+  // for sure.
+  void Kill(const Instruction& inst, exec::OpContext& ctx) {
+    const bool was_defined = killed_defined_;
+    if (inst.cond.present) {
+      const exec::CcOutcome o = exec::TestCcAny(inst.cond, nv_.cc(inst.cond.reg));
+      killed_ = killed_ || o.pass;
+      if (o.pass && o.certain()) killed_defined_ = true;
+      if (!o.certain() && kill_why_ == kDefined) kill_why_ = o.why;
+      kill_unstable_ = kill_unstable_ || o.unstable;
+      kill_dev_ |= o.dev;
+    } else {
+      exec::Execute(inst.op, ctx);
+      killed_ = ctx.killed;
+      killed_defined_ = ctx.killed_defined;
+      kill_why_ = ctx.kill_why;
+      kill_unstable_ = ctx.kill_unstable;
+      kill_dev_ = ctx.kill_dev;
+    }
+    const exec::Taint& t = nv_.taint();
+    if (t.why != kDefined || t.unstable) {
+      killed_defined_ = was_defined;
+      if (kill_why_ == kDefined) kill_why_ = t.why;
+      kill_unstable_ = kill_unstable_ || t.unstable;
+    }
+  }
+
+  // The precision an ALU instruction is carried out at: its suffix, else "at least as much
+  // precision as the destination variable" (NV_fragment_program_option 3.11.4.X): H for a
+  // SHORT one. The instructions without precision suffixes (packing, texture) run at fp32.
+  Precision OperationPrecision(const Instruction& inst) const {
+    if (program_.kind != ProgramKind::Fragment || !program_.Nv()) return Precision::R;
+    const OpcodeInfo& info = GetOpcodeInfo(inst.op);
+    if (info.klass != OpClass::Alu || info.fp2_mods.find('H') == std::string_view::npos) {
+      return Precision::R;
+    }
+    if (inst.precision != Precision::Default) return inst.precision;
+    return DstSize(inst) == VarSize::Short ? Precision::H : Precision::R;
+  }
+
+  VarSize DstSize(const Instruction& inst) const {
+    if (inst.dst.var < 0) return VarSize::Default;
+    return program_.vars[static_cast<size_t>(inst.dst.var)].size;
+  }
+
+  // What the run's flow depends on reaches every result (and whether a KIL discards).
+  void FoldTaint() {
+    const exec::Taint& t = nv_.taint();
+    if (t.why == kDefined && !t.unstable && t.dev == 0) return;
+    for (auto& [key, out] : outputs_) {
+      for (Val& v : out.value) {
+        if (v.why == kDefined) v.why = t.why;
+        if (t.unstable) v.err = exec::kUnstable;
+        v.dev |= t.dev;
+      }
+    }
+    const bool has_kil = std::any_of(program_.instructions.begin(), program_.instructions.end(),
+                                     [](const Instruction& i) { return i.op == Opcode::KIL; });
+    if (has_kil) {
+      if (!killed_defined_ && kill_why_ == kDefined) kill_why_ = t.why;
+      kill_unstable_ = kill_unstable_ || t.unstable;
+      kill_dev_ |= t.dev;
+    }
+  }
+
   void Setup() {
     size_t n = program_.vars.size();
     params_.assign(n, {});
     temps_.assign(n, Reg{Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten},
                          Val{0.0f, kUnwritten}});
-    address_.assign(n, Val{0.0f, kUnwritten});
+    address_.assign(n, Reg{Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten}, Val{0.0f, kUnwritten},
+                           Val{0.0f, kUnwritten}});
     for (size_t v = 0; v < n; ++v) {
       const Variable& var = program_.vars[v];
       if (var.kind == VarKind::Param) {
@@ -294,11 +406,34 @@ class Run {
         return temps_[v];
       case VarKind::Param:
         return FetchParam(src, var, params_[v], where);
-      case VarKind::Address:
+      case VarKind::Address:  // ARA, PUSHA (NV_vertex_program2, 3)
+        return address_[v];
       case VarKind::Output:
         break;
     }
     return exec::DefinedReg({0.0f, 0.0f, 0.0f, 0.0f});
+  }
+
+  // The address component a relative operand uses. NV address registers are vectors (A0.y);
+  // NV_fragment_program2's A0.x is the loop index of the innermost LOOP block.
+  Val AddressComponent(const SrcOperand& src, const std::string& where) {
+    const Variable& addr_var = program_.vars[static_cast<size_t>(src.address_var)];
+    const char component = kComponents[src.address_component & 3u];
+    if (program_.kind == ProgramKind::Fragment) {
+      Val index;
+      if (nv_.LoopIndex(&index)) return index;
+      return Val{0.0f, reasons_->Add(fmt::format("'{}.{}' read outside a LOOP block{}",
+                                                 addr_var.name, component, where))};
+    }
+    Val addr = address_[static_cast<size_t>(src.address_var)][src.address_component & 3u];
+    if (addr.why == kUnwritten) {
+      addr.why = reasons_->Add(
+          program_.Nv() ? fmt::format("address register '{}.{}' read before it is written{}",
+                                      addr_var.name, component, where)
+                        : fmt::format("address register '{}' read before ARL wrote it{}",
+                                      addr_var.name, where));
+    }
+    return addr;
   }
 
   // ARBvp 2.14.4.2: index = addrReg + offset; outside the array the result is undefined and
@@ -310,11 +445,7 @@ class Run {
       return index < elements.size() ? elements[index] : exec::DefinedReg({0, 0, 0, 0});
     }
     const Variable& addr_var = program_.vars[static_cast<size_t>(src.address_var)];
-    Val addr = address_[static_cast<size_t>(src.address_var)];
-    if (addr.why == kUnwritten) {
-      addr.why = reasons_->Add(
-          fmt::format("address register '{}' read before ARL wrote it{}", addr_var.name, where));
-    }
+    const Val addr = AddressComponent(src, where);
     std::string offset = src.index == 0 ? "" : fmt::format("{:+d}", src.index);
     bool finite = std::isfinite(addr.v) && std::fabs(addr.v) < 1.0e9f;
     int64_t index = finite ? static_cast<int64_t>(addr.v) + src.index : -1;
@@ -327,9 +458,9 @@ class Run {
       }
       return exec::UndefinedReg(
           {0.0f, 0.0f, 0.0f, 0.0f},
-          reasons_->Add(fmt::format("relative address {}.x{} = {} outside '{}[0..{}]'{}",
-                                    addr_var.name, offset, index, VarName(var), elements.size() - 1,
-                                    where)));
+          reasons_->Add(fmt::format("relative address {}.{}{} = {} outside '{}[0..{}]'{}",
+                                    addr_var.name, kComponents[src.address_component & 3u], offset,
+                                    index, VarName(var), elements.size() - 1, where)));
     }
     Reg r = elements[static_cast<size_t>(index)];
     for (Val& c : r) {
@@ -356,49 +487,91 @@ class Run {
         size_t c = static_cast<size_t>(sel);
         v = base[c];
         if (v.why == kUnwritten) {
-          v.why = reasons_->Add(fmt::format("temporary '{}.{}' read before it is written{}",
-                                            VarName(var), kComponents[c], where));
+          v.why = reasons_->Add(
+              fmt::format("{} '{}.{}' read before it is written{}",
+                          var.kind == VarKind::Address ? "address register" : "temporary",
+                          VarName(var), kComponents[c], where));
         }
       }
+      if (src.abs) v.v = std::fabs(v.v);  // NV: the absolute value, then the negation
       if (src.negate != src.component_negate[i]) v.v = -v.v;
       r[i] = v;
     }
     return r;
   }
 
-  void Store(const Instruction& inst, Reg result) {
-    if (inst.op == Opcode::KIL) return;
-    if (inst.op == Opcode::ARL) {
-      address_[static_cast<size_t>(inst.dst.var)] = result[0];
-      return;
-    }
-    if (inst.saturate) {
-      // 3.11.4.3: "if (result.x < 0) result.x = 0; else if (result.x > 1) result.x = 1;"
-      for (Val& v : result) {
-        Val in = v;
-        if (v.v < 0.0f) {
-          v.v = 0.0f;
-        } else if (v.v > 1.0f) {
-          v.v = 1.0f;
-        }
-        v.err = exec::CornerBound<1>(v.v, {in}, Clamp01, 0.0);
-        if (std::isnan(in.v)) v.dev |= kDevNanClamp;
+  // 3.11.4.3 (NV_fragment_program 3.11.4.4): "if (result.x < 0) result.x = 0; else if
+  // (result.x > 1) result.x = 1;" for _SAT, [-1, 1] for _SSAT (NV_fragment_program2).
+  static void Saturate(Reg* result, double lo, double hi) {
+    for (Val& v : *result) {
+      const Val in = v;
+      if (v.v < static_cast<float>(lo)) {
+        v.v = static_cast<float>(lo);
+      } else if (v.v > static_cast<float>(hi)) {
+        v.v = static_cast<float>(hi);
       }
+      v.err = exec::CornerBound<1>(
+          v.v, {in}, [&](const D1& x) { return x[0] < lo ? lo : (x[0] > hi ? hi : x[0]); }, 0.0);
+      if (std::isnan(in.v)) v.dev |= kDevNanClamp;
     }
+  }
+
+  // A write that a conditional write mask on an undefined or unstable condition code may
+  // or may not have made: the new value, undefined with the test, or within reach of the old.
+  Val UncertainWrite(Val v, const Val& old, const exec::CcOutcome& t, const std::string& where) {
+    if (v.why == kDefined) v.why = t.why;
+    v.dev |= t.dev;
+    if (!t.unstable) return v;
+    if (old.why != kDefined && v.why == kDefined) {
+      v.why = old.why != kUnwritten
+                  ? old.why
+                  : reasons_->Add(
+                        "a conditional write on an unstable condition code may not "
+                        "happen, leaving the component unwritten" +
+                        where);
+    }
+    const double apart = std::fabs(exec::Wide(v.v) - exec::Wide(old.v)) + exec::Wide(old.err);
+    v.err = std::isnan(apart) ? exec::kUnstable : std::max(v.err, exec::RoundUp(apart));
+    v.dev |= old.dev;
+    return v;
+  }
+
+  // The destination update: saturation, the conversion to a SHORT variable's fp16, the write
+  // mask and the NV conditional write mask, then the condition code update from each written
+  // component (NV_vertex_program2_option 2.14.4.3, NV_fragment_program_option 3.11.4.3).
+  void Store(const Instruction& inst, Reg result, const std::string& where) {
+    if (inst.saturate) Saturate(&result, 0.0, 1.0);
+    if (inst.signed_saturate) Saturate(&result, -1.0, 1.0);
     const Variable& var = program_.vars[static_cast<size_t>(inst.dst.var)];
+    if (var.size == VarSize::Short) {
+      for (Val& v : result) v = exec::ConvertVal(v, Precision::H);
+    }
     Reg* dest = nullptr;
     uint8_t* written = nullptr;
     if (var.kind == VarKind::Output) {
       Output& out = outputs_[KeyOf(var.bindings[0])];
       dest = &out.value;
       written = &out.written;
+    } else if (var.kind == VarKind::Address) {
+      dest = &address_[static_cast<size_t>(inst.dst.var)];
     } else {
       dest = &temps_[static_cast<size_t>(inst.dst.var)];
     }
     for (size_t i = 0; i < 4; ++i) {
       if (!(inst.dst.mask & (1u << i))) continue;
-      (*dest)[i] = result[i];
+      const exec::CcOutcome t = exec::TestCcComponent(inst.dst.cc, nv_.cc(inst.dst.cc.reg), i);
+      if (t.certain() && !t.pass) continue;
+      const bool sure = t.certain();
+      (*dest)[i] = sure ? result[i] : UncertainWrite(result[i], (*dest)[i], t, where);
       if (written) *written = static_cast<uint8_t>(*written | (1u << i));
+      if (inst.cc_update < 0) continue;
+      exec::CcVal cc = exec::GenerateCc(result[i]);
+      if (!sure) {
+        if (cc.why == kDefined) cc.why = t.why;
+        cc.unstable = cc.unstable || t.unstable;
+        cc.dev |= t.dev;
+      }
+      nv_.cc(inst.cc_update)[i] = cc;
     }
   }
 
@@ -409,13 +582,14 @@ class Run {
   const std::vector<Reg>* attrib_ = nullptr;
   std::vector<std::vector<Reg>> params_;
   std::vector<Reg> temps_;
-  std::vector<Val> address_;
+  std::vector<Reg> address_;
   Outputs outputs_;
   bool killed_ = false;
   bool killed_defined_ = false;
   int kill_why_ = kDefined;
   bool kill_unstable_ = false;
   uint32_t kill_dev_ = 0;
+  exec::NvMachine nv_;
 };
 
 std::vector<Reg> VertexAttribs(const Program& program, const VertexInput& in) {

@@ -90,9 +90,23 @@ inline Val From(float v, std::initializer_list<Val> deps, float err = 0.0f) {
   return r;
 }
 
+// What every result of a run depends on beyond its own value: a control flow decision on an
+// undefined or unstable condition, or an abnormal termination (NV options).
+struct Taint {
+  int why = kDefined;
+  bool unstable = false;
+  uint32_t dev = 0;
+  void Add(int w, bool u, uint32_t d) {
+    if (why == kDefined) why = w;
+    unstable = unstable || u;
+    dev |= d;
+  }
+};
+
 // Everything one instruction reads besides its operands.
 struct OpContext {
   const Instruction* inst = nullptr;
+  ProgramKind kind = ProgramKind::Vertex;
   std::array<Reg, 3> src{};  // loaded operands: swizzled (extended for SWZ) and negated
   Reasons* reasons = nullptr;
   std::string where;  // " at line:col" of the instruction, or "" without a source

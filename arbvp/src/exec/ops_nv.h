@@ -1,8 +1,8 @@
 // The instructions the NV program options add (opcodes.def rows with Nv / Nv2): their
 // semantics, one function each, as ops.cpp has them for the ARB instructions. Flow
-// instructions (BRA, CAL, RET, BRK, IF, ELSE, ENDIF, LOOP, REP, ENDLOOP, ENDREP, PUSHA,
-// POPA, ARA) change the machine, not a register: the interpreter runs them, and their
-// functions here are never called.
+// instructions (BRA, CAL, RET, BRK, IF, ELSE, ENDIF, LOOP, REP, ENDLOOP, ENDREP) and the
+// address stack (PUSHA, POPA) change the machine, not a register: the interpreter runs them
+// (nv_flow.h), and their functions here are never called.
 #pragma once
 
 #include "exec/machine.h"
@@ -50,5 +50,9 @@ Reg OpUP2US(OpContext& c);
 Reg OpUP4B(OpContext& c);
 Reg OpUP4UB(OpContext& c);
 Reg OpX2D(OpContext& c);
+
+// ARL under NV_vertex_program2: the component-wise floor of a vector operand, clamped to the
+// address registers' [-512, +511] (NV_vertex_program2 2.14.3.4).
+Reg OpArlNv(OpContext& c);
 
 }  // namespace arbiter::arbvp::exec
