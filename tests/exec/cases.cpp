@@ -2,6 +2,7 @@
 // (the comment says how where it is not obvious); none was copied from an engine's output.
 #include "cases.h"
 
+#include <bit>
 #include <cmath>
 #include <glm/mat4x4.hpp>
 #include <utility>
@@ -1077,6 +1078,325 @@ void PairCases(Table& t) {
         {2});
 }
 
+// ---- The NV program options ---------------------------------------------------------------
+// Mesa has none of them: these cases run on the reference interpreter only.
+
+// An NV program: the option, program.env[0..2] as e0..e2, then the body.
+std::string NvBody(const std::string& option, const std::string& body) {
+  return "OPTION " + option +
+         ";\nPARAM e0 = program.env[0];\nPARAM e1 = program.env[1];\n"
+         "PARAM e2 = program.env[2];\n" +
+         body;
+}
+void NvFp(Table& t, std::string name, std::string spec, const std::string& body,
+          std::vector<Vec4> env, std::vector<Expect> expects, std::vector<size_t> killed = {}) {
+  t.Add(std::move(name), std::move(spec), "", Fp(NvBody("NV_fragment_program2", body)),
+        FpEnv(std::move(env)), std::move(expects), std::move(killed));
+}
+void NvVp(Table& t, std::string name, std::string spec, const std::string& body,
+          std::vector<Vec4> env, std::vector<Expect> expects) {
+  t.Add(std::move(name), std::move(spec), Vp(NvBody("NV_vertex_program3", body)), "",
+        VpEnv(std::move(env)), std::move(expects));
+}
+
+// A float with the given bits (the packing instructions' results).
+float Bits(uint32_t bits) { return std::bit_cast<float>(bits); }
+
+// R1 = (-2, 0, 2, NaN) of the specs' condition code examples: CC = (LT, EQ, GT, UN).
+const Vec4 kCcExample{-2, 0, 2, kNaN};
+
+void NvAluCases(Table& t) {
+  const std::string spec = "NV_fragment_program_option 3.11.5";
+  // NaN compares false, so only SNE is 1 in w.
+  const Vec4 a{1, 2, 3, kNaN};
+  const Vec4 b{1, 3, 2, kNaN};
+  NvFp(t, "nv_seq", spec + ".37", "SEQ result.color, e0, e1;\n", {a, b},
+       {Eq(kColor, {1, 0, 0, 0})});
+  NvFp(t, "nv_sgt", spec + ".39", "SGT result.color, e0, e1;\n", {a, b},
+       {Eq(kColor, {0, 0, 1, 0})});
+  NvFp(t, "nv_sle", spec + ".40", "SLE result.color, e0, e1;\n", {a, b},
+       {Eq(kColor, {1, 1, 0, 0})});
+  NvFp(t, "nv_sne", spec + ".41", "SNE result.color, e0, e1;\n", {a, b},
+       {Eq(kColor, {0, 1, 1, 1})});
+  NvFp(t, "nv_sfl_str", spec + ".38, .42",
+       "TEMP r;\nSFL r.xy, e0, e1;\nSTR r.zw, e0, e1;\nMOV result.color, r;\n", {a, b},
+       {Eq(kColor, {0, 0, 1, 1})});
+  // NV_vertex_program2's rules give 0 for SEQ of NaN, its issue on NaN says NaN.
+  NvVp(t, "nv_vp_seq_nan", "NV_vertex_program2 2.14.3.28 and its NaN issue",
+       "SEQ result.texcoord[0], e0, e1;\n", {a, b},
+       {Eq(kTex0, {1, 0, 0, 0}, 0x7), Undef(kTex0, 0x8, "SEQ of NaN")});
+  NvVp(t, "nv_ssg", "NV_vertex_program2 2.14.3.37", "SSG result.texcoord[0], e0;\n",
+       {{2, -0.0f, -kInf, kNaN}}, {Eq(kTex0, {1, 0, -1, kNaN})});
+  // RCC: 1/2; +0 and -0 give +-2^64 (rules 4, 5), 2^70 gives 2^-64 (rule 6).
+  NvVp(t, "nv_rcc", "NV_vertex_program2 2.14.3.25",
+       "RCC result.texcoord[0].x, e0.x;\nRCC result.texcoord[0].y, e0.y;\n"
+       "RCC result.texcoord[0].z, e0.z;\nRCC result.texcoord[0].w, e0.w;\n",
+       {{2, 0.0f, -0.0f, 0x1p70f}}, {Rel(kTex0, {0.5f, 0x1p64f, -0x1p64f, 0x1p-64f})});
+  NvFp(t, "nv_div", "NV_fragment_program2 3.11.5.48", "DIV result.color, e0, e1.y;\n",
+       {{1, 2, -3, 0}, {0, 2, 0, 0}}, {Rel(kColor, {0.5f, 1, -1.5f, 0})});
+  // DP2 ignores z and w; DP2A adds tmp2.x: 3 + 8 = 11, + 5.
+  NvFp(t, "nv_dp2", "NV_fragment_program2 3.11.5.49", "DP2 result.color, e0, e1;\n",
+       {{1, 2, 100, 100}, {3, 4, 100, 100}}, {Eq(kColor, {11, 11, 11, 11})});
+  NvFp(t, "nv_dp2a", "NV_fragment_program2 3.11.5.50", "DP2A result.color, e0, e1, e2;\n",
+       {{1, 2, 100, 100}, {3, 4, 100, 100}, {5, 7, 7, 7}}, {Eq(kColor, {16, 16, 16, 16})});
+  // (3, 0, 4) / 5; w undefined.
+  NvFp(t, "nv_nrm", "NV_fragment_program2 3.11.5.51", "NRM result.color, e0;\n", {{3, 0, 4, 7}},
+       {Rel(kColor, {0.6f, 0, 0.8f, 0}, kApprox, 0x7), Undef(kColor, 0x8, "NRM w")});
+  // axis (0, 0, 2), direction (1, 2, 3): tmp.w = 4, tmp.x = 2 * 6 / 4 = 3, so
+  // (3 * 0 - 1, 3 * 0 - 2, 3 * 2 - 3).
+  NvFp(t, "nv_rfl", spec + ".36", "RFL result.color.xyz, e0, e1;\n", {{0, 0, 2, 9}, {1, 2, 3, 9}},
+       {Rel(kColor, {-1, -2, 3, 0}, kApprox, 0x7)});
+  // (1 + 3 * 5 + 4 * 6, 2 + 3 * 7 + 4 * 8) in x, z and y, w.
+  NvFp(t, "nv_x2d", spec + ".47", "X2D result.color, e0, e1, e2;\n",
+       {{1, 2, 0, 0}, {3, 4, 0, 0}, {5, 6, 7, 8}}, {Eq(kColor, {40, 55, 40, 55})});
+  // One point per vector: "zero for point-mode polygons" (NV_fragment_program's issues).
+  NvFp(t, "nv_ddx_ddy", spec + ".30-31; NV_fragment_program issue on polygon offset",
+       "TEMP r;\nDDX r.xy, fragment.texcoord[0];\nDDY r.zw, e0;\nMOV result.color, r;\n",
+       {{1, 2, 3, 4}}, {Eq(kColor, {0, 0, 0, 0})});
+  NvFp(t, "nv_ddx_infinite", spec + ".30 and NV_fragment_program 3.11.5.3",
+       "DDX result.color, e0;\n", {{1, kInf, 0, 0}},
+       {Eq(kColor, {0, 0, 0, 0}, 0xD), Undef(kColor, 0x2, "DDX of an infinite or NaN value")});
+  // |x| first, then the negation.
+  NvFp(t, "nv_abs_operand", "NV_fragment_program_option 3.11.4.1", "MOV result.color, -|e0|;\n",
+       {{-1, 2, -0.0f, -kInf}}, {Eq(kColor, {-1, -2, -0.0f, -kInf})});
+  NvFp(t, "nv_ssat", "NV_fragment_program2 3.11.4.3: _SSAT clamps to [-1, 1]",
+       "MOV_SSAT result.color, e0;\n", {{-2, -0.5f, 0.5f, 3}}, {Eq(kColor, {-1, -0.5f, 0.5f, 1})});
+}
+
+void NvPackCases(Table& t) {
+  const std::string spec = "NV_fragment_program_option 3.11.5";
+  // fp16 1.0 = 0x3C00, -2.0 = 0xC000: 0xC0003C00; UP2H gives them back.
+  NvFp(t, "nv_pk2h", spec + ".32", "PK2H result.color, e0;\n", {{1, -2, 0, 0}},
+       {Eq(kColor, {Bits(0xC0003C00u), Bits(0xC0003C00u), Bits(0xC0003C00u), Bits(0xC0003C00u)})});
+  NvFp(t, "nv_up2h", spec + ".43", "TEMP p;\nPK2H p, e0;\nUP2H result.color, p.x;\n",
+       {{1, -2, 0, 0}}, {Eq(kColor, {1, -2, 1, -2})});
+  // 65535 * 1 = 0xFFFF, 65535 * 0.25 = 16383.75 -> 0x4000.
+  NvFp(t, "nv_pk2us", spec + ".33", "PK2US result.color, e0;\n", {{1, 0.25f, 0, 0}},
+       {Eq(kColor, {Bits(0x4000FFFFu), Bits(0x4000FFFFu), Bits(0x4000FFFFu), Bits(0x4000FFFFu)})});
+  NvFp(t, "nv_up2us", spec + ".44", "TEMP p;\nPK2US p, e0;\nUP2US result.color, p.x;\n",
+       {{1, 0.25f, 0, 0}}, {Rel(kColor, {1, 16384.0f / 65535.0f, 1, 16384.0f / 65535.0f})});
+  // 255 * (1, 0, 0.2, 0.6) = (255, 0, 51, 153): 0x993300FF.
+  NvFp(t, "nv_pk4ub", spec + ".35", "PK4UB result.color, e0;\n", {{1, 0, 0.2f, 0.6f}},
+       {Eq(kColor, {Bits(0x993300FFu), Bits(0x993300FFu), Bits(0x993300FFu), Bits(0x993300FFu)})});
+  NvFp(t, "nv_up4ub", spec + ".46", "TEMP p;\nPK4UB p, e0;\nUP4UB result.color, p.x;\n",
+       {{1, 0, 0.2f, 0.6f}}, {Rel(kColor, {1, 0, 0.2f, 0.6f})});
+  // 127 * (-1, 0, 1, 0.25) + 128 = (1, 128, 255, 159.75 -> 160): 0xA0FF8001.
+  NvFp(t, "nv_pk4b", spec + ".34", "PK4B result.color, e0;\n", {{-1, 0, 1, 0.25f}},
+       {Eq(kColor, {Bits(0xA0FF8001u), Bits(0xA0FF8001u), Bits(0xA0FF8001u), Bits(0xA0FF8001u)})});
+  NvFp(t, "nv_up4b", spec + ".45", "TEMP p;\nPK4B p, e0;\nUP4B result.color, p.x;\n",
+       {{-1, 0, 1, 0.25f}}, {Rel(kColor, {-1, 0, 1, 32.0f / 127.0f})});
+  NvFp(t, "nv_pk4ub_nan", spec + ".35: round(NaN) is not defined", "PK4UB result.color, e0;\n",
+       {{kNaN, 0, 0, 0}}, {Undef(kColor, 0xF, "PK4UB of NaN")});
+}
+
+void NvPrecisionCases(Table& t) {
+  const std::string spec = "NV_fragment_program 3.11.4.2";
+  // fp16(1/3): 1.0101010101b * 2^-2 = 1365/4096 (the next bit is 0).
+  NvFp(t, "nv_half_one_third", spec, "MOVH result.color, e0;\n", {{1.0f / 3.0f, 1, -0.0f, kNaN}},
+       {Eq(kColor, {1365.0f / 4096.0f, 1, -0.0f, kNaN})});
+  // >= 2^16 is INF; 65519 rounds to 65504, the largest fp16.
+  NvFp(t, "nv_half_overflow", spec, "MOVH result.color, e0;\n", {{70000, -1e5f, 65519, 65504}},
+       {Eq(kColor, {kInf, -kInf, 65504, 65504})});
+  // The operands are converted first: 1365/4096 + 1365/4096.
+  NvFp(t, "nv_half_operands", spec + ", VectorLoad", "ADDH result.color, e0, e0;\n",
+       {{1.0f / 3.0f, 0, 0, 0}}, {Eq(kColor, {1365.0f / 2048.0f, 0, 0, 0})});
+  NvFp(t, "nv_short_temp", "NV_fragment_program_option 3.11.3.2: SHORT is fp16",
+       "SHORT TEMP h;\nMOV h, e0;\nMOV result.color, h;\n", {{1.0f / 3.0f, 2, 0, 0}},
+       {Eq(kColor, {1365.0f / 4096.0f, 2, 0, 0})});
+  // fx12: [-2048/1024, +2047/1024] in steps of 1/1024; NaN becomes 0; 0.3 * 1024 = 307.2.
+  NvFp(t, "nv_fixed", spec, "MOVX result.color, e0;\n", {{3, -5, 0.3f, kNaN}},
+       {Eq(kColor, {2047.0f / 1024.0f, -2, 307.0f / 1024.0f, 0})});
+}
+
+void NvConditionCodeCases(Table& t) {
+  const std::string spec = "NV_fragment_program_option 3.11.4.3";
+  // The specs' example, step by step.
+  NvFp(t, "nv_cc_example", spec + " (example)",
+       "TEMP r0;\nMOVC r0, e0;\nMOVC r0.xyz, e0.yzwx;\nMOVC r0 (NE), e0.zywx;\n"
+       "MOV result.color, r0;\n",
+       {kCcExample}, {Eq(kColor, {0, 0, kNaN, -2})});
+  // Each rule on CC = (LT, EQ, GT, UN); UN passes NE only (and TR).
+  const struct {
+    const char* rule;
+    Vec4 want;
+  } rules[] = {{"EQ", {0, 1, 0, 0}}, {"NE", {1, 0, 1, 1}}, {"LT", {1, 0, 0, 0}},
+               {"GE", {0, 1, 1, 0}}, {"LE", {1, 1, 0, 0}}, {"GT", {0, 0, 1, 0}},
+               {"TR", {1, 1, 1, 1}}, {"FL", {0, 0, 0, 0}}};
+  for (const auto& r : rules) {
+    NvFp(t, std::string("nv_cc_rule_") + r.rule, spec + ": TestCC",
+         "TEMP c;\nTEMP r;\nMOVC c, e0;\nMOV r, 0;\nMOV r (" + std::string(r.rule) +
+             "), 1;\nMOV result.color, r;\n",
+         {kCcExample}, {Eq(kColor, r.want)});
+  }
+  // The test's swizzle: (LT.wzyx) reads (UN, GT, EQ, LT).
+  NvFp(t, "nv_cc_swizzle", spec + ": the swizzled condition code",
+       "TEMP c;\nTEMP r;\nMOVC c, e0;\nMOV r, 0;\nMOV r (LT.wzyx), 1;\nMOV result.color, r;\n",
+       {kCcExample}, {Eq(kColor, {0, 0, 0, 1})});
+  // The condition code starts EQ; a masked-off component keeps its code.
+  NvFp(t, "nv_cc_initial_eq", "NV_fragment_program_option 3.11.3.X: initialized to EQ",
+       "TEMP c;\nTEMP r;\nMOVC c.x, e0;\nMOV r, 0;\nMOV r (EQ), 1;\nMOV result.color, r;\n",
+       {kCcExample}, {Eq(kColor, {0, 1, 1, 1})});
+  // Codes from the saturated result: -2 clamps to 0 (EQ).
+  NvFp(t, "nv_cc_after_sat", spec + ": the written value sets the code",
+       "TEMP c;\nTEMP r;\nMOVC_SAT c, e0;\nMOV r, 0;\nMOV r (EQ), 1;\nMOV result.color, r;\n",
+       {kCcExample}, {Eq(kColor, {1, 1, 0, 0})});
+  // An undefined value's code makes a masked write undefined.
+  NvFp(t, "nv_cc_undefined", spec,
+       "TEMP u;\nTEMP r;\nMOVC r.x, u.x;\nMOV r, 1;\nMOV r (GT.x), 2;\nMOV result.color, r;\n", {},
+       {Undef(kColor, 0xF, "temporary 'u.x' read before it is written")});
+  // KIL <ccTest>.
+  NvFp(t, "nv_kil_cc", "NV_fragment_program_option 3.11.6.4",
+       "TEMP c;\nMOVC c, e0;\nKIL LT.x;\nMOV result.color, 1;\n", {{-1, 0, 0, 0}}, {}, {0});
+  NvFp(t, "nv_kil_cc_not_taken", "NV_fragment_program_option 3.11.6.4",
+       "TEMP c;\nMOVC c, e0;\nKIL LT.yzww;\nMOV result.color, 1;\n", {{-1, 0, 0, 0}},
+       {Eq(kColor, {1, 1, 1, 1})});
+  // NV_vertex_program3's second condition code.
+  NvVp(t, "nv_cc1", "NV_vertex_program3 2.14.4.3",
+       "TEMP c;\nTEMP r;\nMOVC1 c, e0;\nMOV r, 0;\nMOV r (LT1), 1;\nMOV r (GT), 2;\n"
+       "MOV result.texcoord[0], r;\n",
+       {kCcExample}, {Eq(kTex0, {1, 0, 0, 0})});
+}
+
+void NvFlowCases(Table& t) {
+  const std::string fp2 = "NV_fragment_program2 3.11.X";
+  const std::string if_else =
+      "TEMP c;\nTEMP r;\nMOVC c, e0;\nIF GT.x;\nMOV r, e1;\nELSE;\nMOV r, e2;\nENDIF;\n"
+      "MOV result.color, r;\n";
+  NvFp(t, "nv_if_true", fp2 + ".7", if_else, {{1, 0, 0, 0}, {1, 2, 3, 4}, {5, 6, 7, 8}},
+       {Eq(kColor, {1, 2, 3, 4})});
+  NvFp(t, "nv_if_else", fp2 + ".3, .7", if_else, {{-1, 0, 0, 0}, {1, 2, 3, 4}, {5, 6, 7, 8}},
+       {Eq(kColor, {5, 6, 7, 8})});
+  NvFp(t, "nv_if_no_else", fp2 + ".7",
+       "TEMP c;\nTEMP r;\nMOV r, 0;\nMOVC c, e0;\nIF GT.x;\nMOV r, e1;\nENDIF;\n"
+       "MOV result.color, r;\n",
+       {{-1, 0, 0, 0}, {1, 2, 3, 4}}, {Eq(kColor, {0, 0, 0, 0})});
+  // REP count floor(2.7) = 2; a count of 0 skips the block.
+  const std::string rep =
+      "TEMP r;\nMOV r, 0;\nREP e0;\nADD r, r, 1;\nENDREP;\nMOV result.color, r;\n";
+  NvFp(t, "nv_rep", fp2 + ".6, .9", rep, {{2.7f, 0, 0, 0}}, {Eq(kColor, {2, 2, 2, 2})});
+  NvFp(t, "nv_rep_zero", fp2 + ".9", rep, {{0, 0, 0, 0}}, {Eq(kColor, {0, 0, 0, 0})});
+  NvFp(t, "nv_loop", fp2 + ".5, .8",
+       "TEMP r;\nMOV r, 0;\nLOOP e0;\nADD r, r, 1;\nENDLOOP;\nMOV result.color, r;\n",
+       {{4, 0, 1, 0}}, {Eq(kColor, {4, 4, 4, 4})});
+  // BRK when r.x reaches 3 (SGEC sets GT): 3 iterations of 10.
+  NvFp(t, "nv_brk", fp2 + ".1",
+       "TEMP r;\nTEMP c;\nMOV r, 0;\nREP e0;\nADD r, r, 1;\nSGEC c.x, r.x, 3;\nBRK (GT.x);\n"
+       "ENDREP;\nMOV result.color, r;\n",
+       {{10, 0, 0, 0}}, {Eq(kColor, {3, 3, 3, 3})});
+  // CAL pushes the return; RET with an empty stack ends the program (sub runs once).
+  NvFp(t, "nv_cal_ret", fp2 + ".2, .10",
+       "TEMP r;\nMOV r, 0;\nCAL sub;\nMOV result.color, r;\nRET;\nsub:\nADD r, r, e0;\nRET;\n",
+       {{1, 2, 3, 4}}, {Eq(kColor, {1, 2, 3, 4})});
+  // Execution begins after the label "main".
+  NvFp(t, "nv_main_label", "NV_fragment_program2 3.11.4.X: the label main",
+       "TEMP r;\nsub:\nMOV r, e1;\nRET;\nmain:\nMOV r, e0;\nCAL sub;\nMOV result.color, r;\n",
+       {{1, 2, 3, 4}, {5, 6, 7, 8}}, {Eq(kColor, {5, 6, 7, 8})});
+  // Unbounded recursion overflows MAX_PROGRAM_CALL_DEPTH_NV: the results are undefined.
+  NvFp(t, "nv_call_overflow", fp2 + ".2", "MOV result.color, e0;\nCAL sub;\nsub:\nCAL sub;\n",
+       {{1, 2, 3, 4}}, {Undef(kColor, 0xF, "MAX_PROGRAM_CALL_DEPTH_NV")});
+  // RET inside an IF block of a subroutine leaves the block; the caller goes on.
+  NvFp(t, "nv_ret_in_if", fp2 + ".7, .10",
+       "TEMP r;\nTEMP c;\nMOV r, 0;\nCAL sub;\nADD result.color, r, 1;\nRET;\nsub:\n"
+       "MOVC c, e0;\nIF GT.x;\nMOV r, e1;\nRET;\nENDIF;\nMOV r, e2;\nRET;\n",
+       {{1, 0, 0, 0}, {1, 2, 3, 4}, {5, 6, 7, 8}}, {Eq(kColor, {2, 3, 4, 5})});
+  // A branch on an undefined condition code: every result depends on it.
+  NvFp(t, "nv_if_undefined", fp2 + ".7",
+       "TEMP u;\nTEMP c;\nTEMP r;\nMOVC c, u;\nMOV r, 1;\nIF GT.x;\nMOV r, 2;\nENDIF;\n"
+       "MOV result.color, r;\n",
+       {}, {Undef(kColor, 0xF, "temporary 'u.x' read before it is written")});
+  // Past MAX_PROGRAM_LOOP_COUNT_NV's minimum (255) the implementation decides.
+  NvFp(t, "nv_rep_count_limit", fp2 + " (MAX_PROGRAM_LOOP_COUNT_NV)", rep, {{300, 0, 0, 0}},
+       {Undef(kColor, 0xF, "MAX_PROGRAM_LOOP_COUNT_NV")});
+  // The specs' branch example: the first BRA is taken (x is LT), the second not.
+  NvVp(t, "nv_bra", "NV_vertex_program2_option 2.14.4.X (example)",
+       "TEMP c;\nTEMP r;\nMOV r, 0;\nMOVC c, e0;\nBRA label1 (LT.xyzw);\nMOV r, e1;\nlabel1:\n"
+       "BRA label2 (LT.wyzw);\nMOV r, e2;\nlabel2:\nMOV result.texcoord[0], r;\n",
+       {kCcExample, {1, 1, 1, 1}, {2, 2, 2, 2}}, {Eq(kTex0, {2, 2, 2, 2})});
+  // An endless loop ends at MAX_PROGRAM_EXEC_INSTRUCTIONS_NV: undefined results.
+  NvVp(t, "nv_exec_limit", "NV_vertex_program2_option 2.14.4.X",
+       "MOV result.texcoord[0], e0;\ntop:\nBRA top;\n", {{1, 2, 3, 4}},
+       {Undef(kTex0, 0xF, "MAX_PROGRAM_EXEC_INSTRUCTIONS_NV")});
+}
+
+void NvAddressCases(Table& t) {
+  const std::string array =
+      "ADDRESS A0;\nPARAM arr[4] = { {0, 0, 0, 0}, {1, 1, 1, 1}, "
+      "{2, 2, 2, 2}, {3, 3, 3, 3} };\n";
+  // ARL loads a vector: A0 = floor(0.5, 1.7) = (0, 1); arr[A0.y + 1].
+  NvVp(t, "nv_arl_vector", "NV_vertex_program2_option 2.14.5.3",
+       array + "ARL A0.xy, e0;\nMOV result.texcoord[0], arr[A0.y+1];\n", {{0.5f, 1.7f, 0, 0}},
+       {Eq(kTex0, {2, 2, 2, 2})});
+  // round(2.5) is the even 2; round(-0.7) is -1: arr[-1 + 2].
+  NvVp(t, "nv_arr", "NV_vertex_program2_option 2.14.5.29",
+       array +
+           "ARR A0.xy, e0;\nMOV result.texcoord[0], arr[A0.x];\n"
+           "MOV result.texcoord[1], arr[A0.y+2];\n",
+       {{2.5f, -0.7f, 0, 0}}, {Eq(kTex0, {2, 2, 2, 2}), Eq("result.texcoord[1]", {1, 1, 1, 1})});
+  // ARR clamps to 511: past the array, undefined.
+  NvVp(t, "nv_arr_clamp", "NV_vertex_program2 2.14.3.5",
+       array + "ARR A0.x, e0;\nMOV result.texcoord[0], arr[A0.x-63];\n", {{1000, 0, 0, 0}},
+       {Undef(kTex0, 0xF, "A0.x-63 = 448 outside")});
+  // ARA: (x + z, y + w) of A0 = (1, 2, 1, 0).
+  NvVp(t, "nv_ara", "NV_vertex_program2_option 2.14.5.28",
+       array +
+           "ARL A0, e0;\nARA A0, A0;\nMOV result.texcoord[0], arr[A0.x];\n"
+           "MOV result.texcoord[1], arr[A0.w];\n",
+       {{1, 2, 1, 0}}, {Eq(kTex0, {2, 2, 2, 2}), Eq("result.texcoord[1]", {2, 2, 2, 2})});
+  // ARLC sets the condition code from the integers: A0 = (1, -2, 0, 2) is (GT, LT, EQ, GT).
+  NvVp(t, "nv_arl_cc", "NV_vertex_program2_option 2.14.4.3 (integer results)",
+       array +
+           "TEMP r;\nARLC A0, e0;\nMOV r, 0;\nMOV r (LT), 1;\nMOV r (EQ), 2;\n"
+           "MOV result.texcoord[0], r;\n",
+       {{1.5f, -1.5f, 0.25f, 2}}, {Eq(kTex0, {0, 1, 2, 0})});
+  NvVp(t, "nv_pusha_popa", "NV_vertex_program3 2.14.5.43-44",
+       array +
+           "ARL A0.x, e0.x;\nPUSHA A0;\nARL A0.x, e0.y;\nPOPA A0;\n"
+           "MOV result.texcoord[0], arr[A0.x];\n",
+       {{1, 3, 0, 0}}, {Eq(kTex0, {1, 1, 1, 1})});
+  NvVp(t, "nv_popa_empty", "NV_vertex_program3 2.14.5.43: POPA on an empty stack",
+       array + "MOV result.texcoord[0], e0;\nPOPA A0;\n", {{1, 3, 0, 0}},
+       {Undef(kTex0, 0xF, "POPA on an empty call stack")});
+}
+
+void NvTextureCases(Table& t) {
+  using arbvp::TexFilter;
+  using arbvp::TexWrap;
+  const Texture quad = Quad2D(TexFilter::Nearest, TexWrap::Repeat);
+  // Vertex texture fetch: (0.25, 0.25) is the red texel, (0.75, 0.25) green; TXP divides by
+  // q = 2; TXL's LOD and TXB's bias change nothing on one level.
+  t.Add(
+      "nv_vertex_texture", "NV_vertex_program3 2.14.5.45-48",
+      Vp(NvBody("NV_vertex_program3",
+                "TEX result.texcoord[0], e0, texture[0], 2D;\n"
+                "TXP result.texcoord[1], e1, texture[0], 2D;\n"
+                "TXL result.texcoord[2], e2, texture[0], 2D;\n"
+                "TXB result.texcoord[3], e2, texture[0], 2D;\n")),
+      "",
+      WithTexture(0, quad, VpEnv({{0.25f, 0.25f, 0, 0}, {1.5f, 0.5f, 0, 2}, {0.25f, 0.75f, 0, 3}})),
+      {Eq(kTex0, kRed), Eq("result.texcoord[1]", kGreen), Eq("result.texcoord[2]", kBlue),
+       Eq("result.texcoord[3]", kBlue)});
+  t.Add("nv_txd_txl", "NV_fragment_program_option 3.11.6.5, NV_fragment_program2 3.11.6.6", "",
+        Fp(NvBody("NV_fragment_program2",
+                  "TEMP r;\nTEMP s;\nTXD r, fragment.texcoord[0], e0, e1, texture[0], 2D;\n"
+                  "TXL s, e2, texture[0], 2D;\nADD result.color, r, s;\n")),
+        WithTexture(0, quad,
+                    [](ExecInputs& in) {
+                      in.vectors[0].fragment.texcoord[0] = {0.75f, 0.25f, 0, 1};
+                      in.fragment_params.env[2] = {0.25f, 0.75f, 0, 5};
+                    }),
+        {Eq(kColor, {0, 1, 1, 2})});
+}
+
+void NvCases(Table& t) {
+  NvAluCases(t);
+  NvPackCases(t);
+  NvPrecisionCases(t);
+  NvConditionCodeCases(t);
+  NvFlowCases(t);
+  NvAddressCases(t);
+  NvTextureCases(t);
+}
+
 std::vector<ExecCase> Build() {
   Table t;
   AluCases(t);
@@ -1087,6 +1407,7 @@ std::vector<ExecCase> Build() {
   TextureCases(t);
   FogAndOutputCases(t);
   PairCases(t);
+  NvCases(t);
   return std::move(t.cases);
 }
 
