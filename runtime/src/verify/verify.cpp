@@ -24,8 +24,16 @@ struct Prepared {
   std::vector<std::vector<arbvp::VectorResult>> ref;  // per batch
 };
 
+// The reference interpreter does not run the NV program options yet (issue 21).
+bool UsesNvOptions(const VerifySubject& subject) {
+  return (subject.vertex && subject.vertex->Nv()) || (subject.fragment && subject.fragment->Nv());
+}
+constexpr const char* kNvNotInterpreted =
+    "the reference interpreter does not run the NV program options yet";
+
 Prepared Prepare(const VerifySubject& subject, const VerifyOptions& options) {
   Prepared p;
+  if (UsesNvOptions(subject)) return p;
   p.batches = arbvp::GenerateInputs(subject.vertex, subject.fragment, options.generate);
   for (const arbvp::InputBatch& batch : p.batches) {
     if (subject.vertex && subject.fragment) {
@@ -90,6 +98,10 @@ Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
                   const VerifyOptions& options) {
   Verdict verdict;
   verdict.name = subject.name;
+  if (UsesNvOptions(subject)) {
+    verdict.error = kNvNotInterpreted;
+    return verdict;
+  }
   const Prepared p = Prepare(subject, options);
   CountUntestable(p, &verdict);
   const ArbPrograms programs{subject.vertex, subject.fragment};
