@@ -66,8 +66,8 @@ TEST(EmitNv, SsgRccAndTrigonometry) {
                   "x * 0.0); }"))
       << t.glsl;
   EXPECT_TRUE(Has(t.glsl,
-                  "  if (r > 0.0) return r < 5.421011e-20 ? 5.421011e-20 : "
-                  "(r > 1.8446744e+19 ? 1.8446744e+19 : r);\n"))
+                  "  if (r > 0.0 || (x > 0.0 && x <= 3.4028235e+38)) return r < 5.421011e-20 ? "
+                  "5.421011e-20 : (r > 1.8446744e+19 ? 1.8446744e+19 : r);\n"))
       << t.glsl;
 }
 
@@ -346,6 +346,34 @@ TEST(EmitNv, SubroutinesOfFragmentProgram2LeaveTheirLoops) {
       t.glsl, {"arb_pc = arb_stack[arb_sp];", "if (arb_ls > arb_stack_ls[arb_sp]) {",
                "arb_a0 = arb_loops[arb_stack_ls[arb_sp]].z;", "arb_ls = arb_stack_ls[arb_sp];"}))
       << t.glsl;
+}
+
+// Without the source, comments are rebuilt from the IR, NV suffixes and operands included.
+TEST(EmitNv, CommentsRebuiltFromTheIr) {
+  const std::string text =
+      "!!ARBfp1.0\nOPTION NV_fragment_program2;\nPARAM l = {2, 0, 1, 0};\nTEMP t;\n"
+      "MOVC t, fragment.color;\nIF GT.x;\nLOOP l;\nADDH_SAT t (NE.xyxy), |t|, -t;\n"
+      "BRK (LE.w);\nENDLOOP;\nENDIF;\nKIL LT.z;\nCAL f (GT);\nMOV result.color, t;\nRET;\n"
+      "f:\nTXD t, t, t, t, texture[0], 2D;\nRET (EQ.y);\nEND\n";
+  Checked c = CheckText("cm.fp", text);
+  ASSERT_TRUE(c.program) << c.errors;
+  Translation with = EmitGlsl(*c.program, EmitOptions{}, c.source.get());
+  Translation without = EmitGlsl(*c.program, EmitOptions{}, nullptr);
+  EXPECT_EQ(GlslErrors(ProgramKind::Fragment, without.glsl), "") << without.glsl;
+  EXPECT_EQ(Statements(with.glsl), Statements(without.glsl));
+  std::vector<std::string> comments;
+  for (size_t at = without.glsl.find("// "); at != std::string::npos;
+       at = without.glsl.find("// ", at + 1)) {
+    comments.push_back(without.glsl.substr(at + 3, without.glsl.find('\n', at) - at - 3));
+  }
+  for (const char* expected :
+       {"MOVC t, fragment.color.primary;", "IF GT.x;", "LOOP l;", "ADDH_SAT t (NE.xyxy), |t|, -t;",
+        "BRK (LE.w);", "ENDLOOP;", "KIL LT.z;", "CAL f (GT);", "RET;",
+        "TXD t, t, t, t, texture[0], 2D;", "RET (EQ.y);"}) {
+    EXPECT_NE(std::find(comments.begin(), comments.end(), expected), comments.end())
+        << expected << " in\n"
+        << without.glsl;
+  }
 }
 
 }  // namespace

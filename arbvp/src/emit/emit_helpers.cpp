@@ -2,6 +2,8 @@
 // vector written out as the specs' pseudo-code, and bounds-checked relative-address readers.
 #include <fmt/format.h>
 
+#include <limits>
+
 #include "emit/emit_context.h"
 
 namespace arbiter::arbvp::emit {
@@ -138,16 +140,18 @@ std::string RoundEvenText() {
 constexpr float kRccMin = 5.42101086242752217e-20f;
 constexpr float kRccMax = 1.8446744073709552e19f;
 
+// The positive branch is taken for every finite positive x: 1/x below 2^-126 is a float32
+// denormal, which GPUs flush to 0.
 std::string RccText() {
   return fmt::format(
       "// RCC (NV_vertex_program2_option 2.14.5.33): 1/x clamped to [2^-64, 2^64] when it is\n"
       "// positive, else to [-2^64, -2^-64].\n"
       "float arb_rcc(float x) {{\n"
       "  float r = 1.0 / x;\n"
-      "  if (r > 0.0) return r < {0} ? {0} : (r > {1} ? {1} : r);\n"
+      "  if (r > 0.0 || (x > 0.0 && x <= {2})) return r < {0} ? {0} : (r > {1} ? {1} : r);\n"
       "  return r > -{0} ? -{0} : (r < -{1} ? -{1} : r);\n"
       "}}\n",
-      FormatFloat(kRccMin), FormatFloat(kRccMax));
+      FormatFloat(kRccMin), FormatFloat(kRccMax), FormatFloat(std::numeric_limits<float>::max()));
 }
 
 const char* kSsgText =
