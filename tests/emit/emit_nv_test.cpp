@@ -376,5 +376,39 @@ TEST(EmitNv, CommentsRebuiltFromTheIr) {
   }
 }
 
+// fragment.texcoord[A0.x + n] inside a LOOP block reads the loop's index, clamped at 0,
+// from a copy of the texture coordinates (the IR as the parser would give it: an attribute
+// variable binding every element, read with relative addressing).
+TEST(EmitNv, LoopIndexAddressesTextureCoordinates) {
+  Checked c = CheckText("rel.fp",
+                        "!!ARBfp1.0\nOPTION NV_fragment_program2;\nPARAM l = {2, 0, 1, 0};\n"
+                        "TEMP t;\nMOV t, 0;\nLOOP l;\nADD t, t, fragment.texcoord[1];\nENDLOOP;\n"
+                        "MOV result.color, t;\nEND\n");
+  ASSERT_TRUE(c.program) << c.errors;
+  Instruction& add = c.program->instructions[2];
+  ASSERT_EQ(add.op, Opcode::ADD);
+  SrcOperand& src = add.src[1];
+  Variable& var = c.program->vars[static_cast<size_t>(src.var)];
+  ASSERT_EQ(var.kind, VarKind::Attrib);
+  Binding element = var.bindings.at(0);
+  var.bindings.clear();
+  for (int n = 0; n < 8; ++n) {
+    element.index = n;
+    var.bindings.push_back(element);
+  }
+  var.is_array = true;
+  src.relative = true;
+  src.index = 1;
+  Translation t = EmitGlsl(*c.program, EmitOptions{}, nullptr);
+  EXPECT_EQ(GlslErrors(ProgramKind::Fragment, t.glsl), "") << t.glsl;
+  EXPECT_TRUE(
+      HasRun(t.glsl, {"attrib[7] = gl_TexCoord[7];", "t = vec4(0.0);", "arb_loop1 = 2;",
+                      "arb_a0_1 = 0;", "arb_incr1 = 1;", "for (; arb_loop1 > 0; --arb_loop1) {",
+                      "t = t + arb_read_attrib((arb_a0_1 < 0 ? 0 : arb_a0_1) + 1);",
+                      "arb_a0_1 += arb_incr1;", "}  // ENDLOOP;"}))
+      << t.glsl;
+  EXPECT_TRUE(Has(t.glsl, "  if (arb_i < 0 || arb_i > 7) return vec4(0.0);\n")) << t.glsl;
+}
+
 }  // namespace
 }  // namespace arbiter::arbvp::testing

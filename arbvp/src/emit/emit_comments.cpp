@@ -50,7 +50,13 @@ std::string SrcText(const Context& ctx, const Instruction& inst, const SrcOperan
     std::string off = s.index > 0   ? fmt::format(" + {}", s.index)
                       : s.index < 0 ? fmt::format(" - {}", -s.index)
                                     : "";
-    out += fmt::format("{}[{}{}]", v.name, a, off);
+    // An attribute array bound in the instruction: its binding without the element.
+    std::string array = v.name;
+    if (array.empty() && !v.bindings.empty()) {
+      array = BindingName(v.bindings[0], ctx.program.kind);
+      array = array.substr(0, array.find('['));
+    }
+    out += fmt::format("{}[{}{}]", array, a, off);
   } else {
     out += VarText(ctx, s.var, s.index, s.indexed);
   }

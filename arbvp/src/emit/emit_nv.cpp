@@ -50,7 +50,7 @@ std::string AddressComponent(const Context& ctx, const SrcOperand& src) {
     std::string index = ctx.flow == FlowMode::Machine ? "arb_a0"
                         : ctx.open_loops.empty()      ? "0"
                                                  : fmt::format("arb_a0_{}", ctx.open_loops.back());
-    return fmt::format("max({}, 0)", index);
+    return fmt::format("({0} < 0 ? 0 : {0})", index);  // GLSL 1.10 has no integer max()
   }
   std::string name = AddressName(ctx, src.address_var);
   if (!ctx.program.Nv()) return name;

@@ -50,9 +50,10 @@ Expr Load(Context& ctx, const SrcOperand& src, const Comps& comps) {
       break;
     case VarKind::Attrib:
     case VarKind::Output:
-      base = ReadBinding(ctx, var.bindings.at(0));
-      break;
     case VarKind::Param: {
+      // Relative addressing of a PARAM array, and of the attribute arrays of
+      // NV_vertex_program3 (vertex.attrib, vertex.texcoord) and NV_fragment_program2
+      // (fragment.texcoord[A0.x + n]) when the variable binds every element.
       if (src.relative) {
         base = {fmt::format("{}({})", RelativeReaderName(ctx, src.var), RelativeIndex(ctx, src)), 4,
                 true};

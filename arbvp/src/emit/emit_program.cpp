@@ -120,11 +120,13 @@ std::string EmitShader(Context& ctx) {
                     p.HasOption(OptionId::DrawBuffers) ? fmt::format("[{}]", n) : "");
   }
   for (size_t i = 0; i < p.vars.size(); ++i) {
-    if (!ctx.relative[i] || p.vars[i].kind != VarKind::Param) continue;
+    // A relatively addressed array is copied at the start: its elements are constant.
     const Variable& v = p.vars[i];
+    if (!ctx.relative[i] || (v.kind != VarKind::Param && v.kind != VarKind::Attrib)) continue;
     const std::string& name = ctx.var_names[i];
-    globals += fmt::format("vec4 {}[{}];  // PARAM {}, read with relative addressing\n", name,
-                           v.bindings.size(), v.name);
+    globals += fmt::format("vec4 {}[{}];  // {} {}, read with relative addressing\n", name,
+                           v.bindings.size(), v.kind == VarKind::Param ? "PARAM" : "ATTRIB",
+                           v.name.empty() ? BindingName(v.bindings.at(0), p.kind) : v.name);
     for (size_t e = 0; e < v.bindings.size(); ++e) {
       locals += fmt::format("{}[{}] = {};\n", name, e, ReadBinding(ctx, v.bindings[e]).text);
     }

@@ -78,9 +78,11 @@ void AssignNames(Context& ctx) {
   for (size_t i = 0; i < p.vars.size(); ++i) {
     const Variable& v = p.vars[i];
     bool named = v.kind == VarKind::Temp || v.kind == VarKind::Address ||
-                 (v.kind == VarKind::Param && ctx.relative[i]);
+                 ((v.kind == VarKind::Param || v.kind == VarKind::Attrib) && ctx.relative[i]);
     if (!named) continue;
-    std::string base = SanitizeName(v.name.empty() ? "param" : v.name);
+    std::string base = SanitizeName(!v.name.empty()             ? v.name
+                                    : v.kind == VarKind::Attrib ? "attrib"
+                                                                : "param");
     std::string name = base;
     for (int n = 2; taken.count(name); ++n) name = base + "_" + std::to_string(n);
     taken.insert(name);
