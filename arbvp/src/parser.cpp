@@ -2073,6 +2073,7 @@ class Parser {
       }
     } else if (scalar && program_->Nv() && IsInlineScalar(src)) {
       // <paramUseS> ::= <constantScalar> under the NV options: no suffix needed.
+      src.swizzle = {Swz::X, Swz::X, Swz::X, Swz::X};
     } else if (scalar) {
       return Fail(
           Diag::OperandScalarRequired, src.range,

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <set>
 
+#include "nv_syntax.h"
+
 namespace arbiter::arbvp {
 namespace {
 
@@ -52,6 +54,11 @@ std::vector<std::string> VariableNames(const Program& program) {
 }
 
 std::string Declaration(const Variable& var, const std::string& name, ProgramKind kind) {
+  if (var.size != VarSize::Default && (var.kind == VarKind::Temp || var.kind == VarKind::Output)) {
+    Variable plain = var;
+    plain.size = VarSize::Default;
+    return (var.size == VarSize::Short ? "SHORT " : "LONG ") + Declaration(plain, name, kind);
+  }
   switch (var.kind) {
     case VarKind::Temp:
       return fmt::format("TEMP {};", name);
@@ -114,7 +121,14 @@ class Printer {
     for (size_t i = 0; i < program_.vars.size(); ++i) {
       out += Declaration(program_.vars[i], names_[i], program_.kind) + "\n";
     }
-    for (const Instruction& inst : program_.instructions) out += PrintInstruction(inst) + "\n";
+    for (size_t i = 0; i <= program_.instructions.size(); ++i) {
+      for (const Label& label : program_.labels) {
+        if (label.index == static_cast<int>(i)) out += label.name + ":\n";
+      }
+      if (i < program_.instructions.size()) {
+        out += PrintInstruction(program_.instructions[i]) + "\n";
+      }
+    }
     return out + "END\n";
   }
 
@@ -122,15 +136,38 @@ class Printer {
   std::string PrintInstruction(const Instruction& inst) {
     const OpcodeInfo& info = GetOpcodeInfo(inst.op);
     std::string text(info.name);
+    if (inst.precision != Precision::Default) text += "?RHX"[static_cast<int>(inst.precision)];
+    if (inst.cc_update == 0) text += "C";
+    if (inst.cc_update == 1) text += "C1";
     if (inst.saturate) text += "_SAT";
+    if (inst.signed_saturate) text += "_SSAT";
+    switch (info.signature) {
+      case OpSignature::Branch:
+        return fmt::format("{} {}{};", text, inst.label, CcMask(inst.cond));
+      case OpSignature::FlowCc:
+      case OpSignature::EndFlow:
+        return fmt::format("{}{};", text, CcMask(inst.cond));
+      case OpSignature::If:
+        return fmt::format("{} {};", text, CcTestText(inst.cond));
+      case OpSignature::Kil:
+        if (inst.cond.present) return fmt::format("{} {};", text, CcTestText(inst.cond));
+        break;
+      case OpSignature::PushA:
+        return fmt::format("{} {};", text, names_.at(static_cast<size_t>(inst.src[0].var)));
+      default:
+        break;
+    }
     std::vector<std::string> operands;
-    if (info.signature != OpSignature::Kil) operands.push_back(Dst(inst.dst));
+    const bool has_dst = info.signature != OpSignature::Kil && info.signature != OpSignature::Loop;
+    if (has_dst) operands.push_back(Dst(inst.dst));
     if (info.signature == OpSignature::Swz) {
       operands.push_back(ExtendedSwizzle(inst.src[0]));
+    } else if (info.signature == OpSignature::Ara) {
+      operands.push_back(names_.at(static_cast<size_t>(inst.src[0].var)));
     } else {
       for (int i = 0; i < inst.src_count; ++i) operands.push_back(Src(inst.src[i]));
     }
-    if (info.signature == OpSignature::Sample) {
+    if (info.signature == OpSignature::Sample || info.signature == OpSignature::TexD) {
       operands.push_back(fmt::format("texture[{}]", inst.tex_unit));
       operands.emplace_back(TexTargetName(inst.target));
     }
@@ -140,26 +177,41 @@ class Printer {
 
   std::string Dst(const DstOperand& dst) {
     std::string text = names_.at(static_cast<size_t>(dst.var));
-    // An address register always spells its only component (<addrWriteMask> is required).
+    // An ARB address register always spells its only component (<addrWriteMask> is
+    // required); NV address registers are vectors.
     bool address = program_.vars.at(static_cast<size_t>(dst.var)).kind == VarKind::Address;
-    if (dst.mask != 0xF || address) text += MaskText(dst.mask);
+    if (dst.mask != 0xF || (address && !program_.Nv())) text += MaskText(dst.mask);
+    return text + CcMask(dst.cc);
+  }
+
+  // <ccTest> and <ccMask> of the NV options ("GT1.xyzw", " (GT1.xyzw)").
+  static std::string CcTestText(const CcTest& cc) {
+    std::string text(CcRuleName(cc.rule));
+    if (cc.reg == 1) text += "1";
+    text += ".";
+    for (Swz c : cc.swizzle) text += ComponentChar(c);
     return text;
+  }
+  static std::string CcMask(const CcTest& cc) {
+    return cc.present ? " (" + CcTestText(cc) + ")" : "";
   }
 
   std::string Register(const SrcOperand& src) {
     std::string text = names_.at(static_cast<size_t>(src.var));
     if (src.relative) {
-      std::string address = names_.at(static_cast<size_t>(src.address_var));
-      if (src.index > 0) return fmt::format("{}[{}.x + {}]", text, address, src.index);
-      if (src.index < 0) return fmt::format("{}[{}.x - {}]", text, address, -src.index);
-      return fmt::format("{}[{}.x]", text, address);
+      std::string address = fmt::format("{}.{}", names_.at(static_cast<size_t>(src.address_var)),
+                                        "xyzw"[src.address_component]);
+      if (src.index > 0) return fmt::format("{}[{} + {}]", text, address, src.index);
+      if (src.index < 0) return fmt::format("{}[{} - {}]", text, address, -src.index);
+      return fmt::format("{}[{}]", text, address);
     }
     if (src.indexed) text += fmt::format("[{}]", src.index);
     return text;
   }
 
   std::string Src(const SrcOperand& src) {
-    std::string text = (src.negate ? "-" : "") + Register(src);
+    std::string text = src.abs ? "|" + Register(src) : Register(src);
+    if (src.negate) text = "-" + text;
     const auto& s = src.swizzle;
     if (s[0] == s[1] && s[1] == s[2] && s[2] == s[3]) {
       // A replicated component: the scalar form, which scalar instructions require.
@@ -169,7 +221,7 @@ class Printer {
       text += ".";
       for (Swz c : s) text += ComponentChar(c);
     }
-    return text;
+    return src.abs ? text + "|" : text;
   }
 
   // <extendedSwizzle>: the register (SWZ allows no sign there, so a negated source flips

@@ -21,14 +21,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Relative to corpus/arb: the valid programs and the valid NV option programs.
 std::vector<std::string> ValidFiles() {
   std::vector<std::string> files;
-  fs::path root = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb" / "valid";
-  if (!fs::exists(root)) return files;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    std::string ext = entry.path().extension().string();
-    if (entry.is_regular_file() && (ext == ".vp" || ext == ".fp")) {
-      files.push_back(fs::relative(entry.path(), root).generic_string());
+  const fs::path corpus = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb";
+  for (const char* folder : {"valid", "valid-nv"}) {
+    if (!fs::exists(corpus / folder)) continue;
+    for (const auto& entry : fs::recursive_directory_iterator(corpus / folder)) {
+      std::string ext = entry.path().extension().string();
+      if (entry.is_regular_file() && (ext == ".vp" || ext == ".fp")) {
+        files.push_back(fs::relative(entry.path(), corpus).generic_string());
+      }
     }
   }
   std::sort(files.begin(), files.end());
@@ -92,6 +95,8 @@ void ExpectSameSrc(const SrcOperand& a, const SrcOperand& b) {
   EXPECT_EQ(a.indexed, b.indexed);
   EXPECT_EQ(a.relative, b.relative);
   EXPECT_EQ(a.address_var, b.address_var);
+  EXPECT_EQ(a.address_component, b.address_component);
+  EXPECT_EQ(a.abs, b.abs);
   EXPECT_EQ(a.index, b.index);
 }
 
@@ -108,6 +113,7 @@ void ExpectSameProgram(const Program& a, const Program& b) {
       EXPECT_EQ(va.name, vb.name);
     }
     EXPECT_EQ(va.kind, vb.kind);
+    EXPECT_EQ(va.size, vb.size);
     EXPECT_EQ(va.is_array, vb.is_array);
     ASSERT_EQ(va.bindings.size(), vb.bindings.size());
     for (size_t k = 0; k < va.bindings.size(); ++k)
@@ -120,6 +126,18 @@ void ExpectSameProgram(const Program& a, const Program& b) {
     const Instruction& ib = b.instructions[i];
     EXPECT_EQ(ia.op, ib.op);
     EXPECT_EQ(ia.saturate, ib.saturate);
+    EXPECT_EQ(ia.signed_saturate, ib.signed_saturate);
+    EXPECT_EQ(ia.precision, ib.precision);
+    EXPECT_EQ(ia.cc_update, ib.cc_update);
+    EXPECT_EQ(ia.jump, ib.jump);
+    EXPECT_EQ(ia.label, ib.label);
+    for (const auto* cc : {&ia.cond, &ia.dst.cc}) {
+      const CcTest& other = cc == &ia.cond ? ib.cond : ib.dst.cc;
+      EXPECT_EQ(cc->present, other.present);
+      EXPECT_EQ(cc->rule, other.rule);
+      EXPECT_EQ(cc->reg, other.reg);
+      EXPECT_EQ(cc->swizzle, other.swizzle);
+    }
     if (GetOpcodeInfo(ia.op).signature != OpSignature::Kil) {
       EXPECT_EQ(ia.dst.var, ib.dst.var);
       EXPECT_EQ(ia.dst.mask, ib.dst.mask);
@@ -136,7 +154,7 @@ void ExpectSameProgram(const Program& a, const Program& b) {
 class PrintTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PrintTest, ParsePrintParseKeepsTheProgram) {
-  fs::path path = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb" / "valid" / GetParam();
+  fs::path path = fs::path(ARBITER_SOURCE_DIR) / "corpus" / "arb" / GetParam();
   std::string log;
   CheckResult first = Check(GetParam(), ReadAll(path), &log);
   ASSERT_TRUE(first.ok) << log;
