@@ -236,14 +236,6 @@ int RunExec(const ExecCommandOptions& options) {
     for (const std::string& w : warnings) fmt::print(stderr, "arbiter: warning: {}\n", w);
   }
 
-  for (const arbvp::Program* p : run_programs) {
-    if (p->Nv()) {
-      fmt::print(stderr,
-                 "arbiter: the reference interpreter does not run the NV program options "
-                 "yet\n");
-      return static_cast<int>(Exit::Rejected);
-    }
-  }
   std::vector<EngineRun> runs;
   if (options.engine == "ref" || options.engine == "all") {
     EngineRun run{"ref", {}};

@@ -13,7 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // -1: not a corpus entry worth keeping.
   if (!fuzz::AcceptArbProgram(data, size, &accepted)) return -1;
   const arbvp::Program& program = *accepted.checked.program;
-  if (program.Nv()) return -1;  // the interpreter does not run the NV options yet
   const bool vertex = accepted.vertex;
   const compiler::SourceFile* source = accepted.source.get();
   arbvp::GenerateOptions options;

@@ -1,5 +1,5 @@
 !!ARBfp1.0
-# NV_fragment_program: half precision, condition codes, conditional writes, KIL on a test, packing (NV_fragment_program_option)
+# NV_fragment_program: half precision, condition codes, conditional writes, KIL on a test, derivatives (NV_fragment_program_option)
 OPTION NV_fragment_program;
 SHORT TEMP h;
 LONG TEMP l;
@@ -9,7 +9,5 @@ SUBC l, h, 0.5;
 KIL LT.w;
 MOV result.color, h;
 MOV result.color.xyz (GT.xyzw), l;
-PK2H l.x, fragment.texcoord[1];
-UP2H result.color.w, l.x;
 DDX h, fragment.texcoord[0];
 END

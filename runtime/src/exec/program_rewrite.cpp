@@ -180,7 +180,8 @@ class Editor {
 std::vector<OutputSlot> WrittenOutputs(const Program& program) {
   std::map<RegisterKey, OutputSlot> slots;
   for (const Instruction& inst : program.instructions) {
-    if (arbvp::GetOpcodeInfo(inst.op).signature == arbvp::OpSignature::Kil) continue;
+    // KIL and the NV flow instructions (and PUSHA) write no register.
+    if (inst.op == arbvp::Opcode::KIL || inst.dst.var < 0) continue;
     const Variable& var = program.vars.at(static_cast<size_t>(inst.dst.var));
     if (var.kind != VarKind::Output) continue;
     OutputSlot& slot = slots[KeyOf(var.bindings.at(0))];
