@@ -62,12 +62,14 @@ TEST(EmitNv, SsgRccAndTrigonometry) {
   EXPECT_EQ(Statements(t.glsl), (Lines{"t = arb_ssg(gl_Vertex);", "t.y = arb_rcc(gl_Color.x);",
                                        "t.z = sin(t.x);", "t.w = cos(2.0);"}));
   EXPECT_TRUE(Has(t.glsl,
-                  "float arb_ssg(float x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : "
-                  "x * 0.0); }"))
+                  "float arb_ssg(float x) { return x != x ? x : (x > 0.0 ? 1.0 : (x < "
+                  "0.0 ? -1.0 : 0.0)); }"))
       << t.glsl;
-  EXPECT_TRUE(Has(t.glsl,
-                  "  if (r > 0.0 || (x > 0.0 && x <= 3.4028235e+38)) return r < 5.421011e-20 ? "
-                  "5.421011e-20 : (r > 1.8446744e+19 ? 1.8446744e+19 : r);\n"))
+  EXPECT_TRUE(
+      Has(t.glsl,
+          "  if (r > 0.0 || (x > 0.0 && x <= 3.4028235e+38)) return clamp(r, 5.421011e-20, "
+          "1.8446744e+19);\n  if (r <= 0.0) return clamp(r, -1.8446744e+19, -5.421011e-20);\n"
+          "  return r;\n"))
       << t.glsl;
 }
 

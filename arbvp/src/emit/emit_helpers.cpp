@@ -84,15 +84,16 @@ std::string VectorForms(const std::string& type, const std::string& name) {
   return out;
 }
 
-// fp16 rounding, exact in float32: every step scales by a power of two.
+// fp16 rounding, exact in float32: every step scales by a power of two. NaN is tested with
+// x != x (GLSL's isnan idiom, which compilers keep; they may rewrite !(a > 0) as a <= 0).
 std::string Fp16Text() {
   return "// fp16 (NV_fragment_program 3.11.4.1-2): the nearest half float, ties to even, with\n"
          "// fp16 denormals (steps of 2^-24 below 2^-14); |x| >= 65520 rounds to infinity;\n"
          "// NaN, infinities and zeros are unchanged. Exact: every scaling is by a power of 2.\n"
          "float arb_fp16(float x) {\n"
          "  float a = abs(x);\n"
+         "  if (x != x || a == 0.0) return x;\n"
          "  if (a >= 65520.0) return x * 1.0e30 * 1.0e30;\n"
-         "  if (!(a > 0.0)) return x;\n"
          "  float ulp = 1.0 / 16777216.0;\n"
          "  float scale = 16777216.0;\n"
          "  float limit = 1.0 / 8192.0;\n"
@@ -117,9 +118,9 @@ std::string Fx12Text() {
          "// above +2047/1024 (infinities too) become those, NaN becomes 0, and the rest the\n"
          "// nearest multiple of 1/1024, a tie to the even one.\n"
          "float arb_fx12(float x) {\n"
+         "  if (x != x) return 0.0;\n"
          "  if (x < -2.0) return -2.0;\n"
          "  if (x > 1.9990234375) return 1.9990234375;\n"
-         "  if (!(x >= -2.0)) return 0.0;\n"
          "  return arb_round_even(x * 1024.0) * 0.0009765625;\n"
          "}\n" +
          VectorForms("vec", "arb_fx12");
@@ -140,24 +141,28 @@ std::string RoundEvenText() {
 constexpr float kRccMin = 5.42101086242752217e-20f;
 constexpr float kRccMax = 1.8446744073709552e19f;
 
-// The positive branch is taken for every finite positive x: 1/x below 2^-126 is a float32
-// denormal, which GPUs flush to 0.
+// The positive branch is taken for every finite positive x: 1/x below 2^-126 is a denormal,
+// which GPUs flush to 0. NaN is tested last, outside any select a compiler could turn into
+// min and max (which drop NaN).
 std::string RccText() {
   return fmt::format(
       "// RCC (NV_vertex_program2_option 2.14.5.33): 1/x clamped to [2^-64, 2^64] when it is\n"
-      "// positive, else to [-2^64, -2^-64].\n"
+      "// positive, else to [-2^64, -2^-64]; NaN stays NaN.\n"
       "float arb_rcc(float x) {{\n"
       "  float r = 1.0 / x;\n"
-      "  if (r > 0.0 || (x > 0.0 && x <= {2})) return r < {0} ? {0} : (r > {1} ? {1} : r);\n"
-      "  return r > -{0} ? -{0} : (r < -{1} ? -{1} : r);\n"
+      "  if (r > 0.0 || (x > 0.0 && x <= {2})) return clamp(r, {0}, {1});\n"
+      "  if (r <= 0.0) return clamp(r, -{1}, -{0});\n"
+      "  return r;\n"
       "}}\n",
       FormatFloat(kRccMin), FormatFloat(kRccMax), FormatFloat(std::numeric_limits<float>::max()));
 }
 
+// NaN is tested first, with x != x (GLSL's isnan idiom, which compilers keep): Mesa rewrites
+// -|a| < 0 into a != 0, which NaN passes.
 const char* kSsgText =
     "// SSG (NV_vertex_program2_option 2.14.5.41): 1, 0 or -1 as x is above, at or below 0;\n"
     "// NaN stays NaN (GLSL's sign() leaves it undefined).\n"
-    "float arb_ssg(float x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : x * 0.0); }\n";
+    "float arb_ssg(float x) { return x != x ? x : (x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0)); }\n";
 
 const char* kRflText =
     "// RFL (NV_fragment_program_option 3.11.5.36): the reflection of d about the axis a,\n"

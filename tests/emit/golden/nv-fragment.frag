@@ -19,8 +19,8 @@ vec4 arb_round_even(vec4 v) { return vec4(arb_round_even(v.x), arb_round_even(v.
 // NaN, infinities and zeros are unchanged. Exact: every scaling is by a power of 2.
 float arb_fp16(float x) {
   float a = abs(x);
+  if (x != x || a == 0.0) return x;
   if (a >= 65520.0) return x * 1.0e30 * 1.0e30;
-  if (!(a > 0.0)) return x;
   float ulp = 1.0 / 16777216.0;
   float scale = 16777216.0;
   float limit = 1.0 / 8192.0;
@@ -45,9 +45,9 @@ vec4 arb_fp16(vec4 v) { return vec4(arb_fp16(v.x), arb_fp16(v.y), arb_fp16(v.z),
 // above +2047/1024 (infinities too) become those, NaN becomes 0, and the rest the
 // nearest multiple of 1/1024, a tie to the even one.
 float arb_fx12(float x) {
+  if (x != x) return 0.0;
   if (x < -2.0) return -2.0;
   if (x > 1.9990234375) return 1.9990234375;
-  if (!(x >= -2.0)) return 0.0;
   return arb_round_even(x * 1024.0) * 0.0009765625;
 }
 vec2 arb_fx12(vec2 v) { return vec2(arb_fx12(v.x), arb_fx12(v.y)); }
