@@ -67,6 +67,17 @@ void CheckOperands(const CheckContext& ctx) {
     }
   }
 
+  // NV_fragment_program (RFL): "A fragment program will fail to load if the w component of
+  // the result is enabled in the component write mask". NVIDIA's drivers load such programs
+  // (piglit's size_specifier tests expect it), so arbiter warns and leaves w undefined.
+  for (const Instruction& inst : program.instructions) {
+    if (inst.op == Opcode::RFL && (inst.dst.mask & 0x8)) {
+      ctx.Report(Diag::RflWritesW, inst.dst.range,
+                 "RFL writes w, which is undefined; NV_fragment_program says such a program fails "
+                 "to load (NVIDIA's drivers load it): mask the destination with .xyz");
+    }
+  }
+
   // After an error some statements are missing: data-flow warnings would only be echoes.
   if (ctx.sink->error_count() > ctx.errors_before) return;
   std::vector<uint8_t> written(program.vars.size(), 0);

@@ -164,7 +164,7 @@ std::string RCC(Context& ctx, const Instruction& inst) {
 }
 
 // RFL: the direction b reflected about the axis a (see arb_rfl; GLSL's reflect() takes a
-// unit normal and the opposite sign). The w component cannot be written.
+// unit normal and the opposite sign). Its w is undefined.
 std::string RFL(Context& ctx, const Instruction& inst) {
   ctx.helpers.insert(Helper::Rfl);
   Expr e3 = Call(fmt::format("arb_rfl({}, {})", Source(ctx, Src(inst, 0), {0, 1, 2}).text,
@@ -172,6 +172,8 @@ std::string RFL(Context& ctx, const Instruction& inst) {
                  3);
   return Assign(ctx, inst, [&](const Comps& comps) {
     if (comps == Comps{0, 1, 2}) return e3;
+    // w is undefined (arb-rfl-writes-w): 0.0 stands for it.
+    if (comps.back() == 3) return Select(Call(fmt::format("vec4({}, 0.0)", e3.text), 4), comps);
     return Select(e3, comps);
   });
 }

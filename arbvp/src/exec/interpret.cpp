@@ -738,6 +738,11 @@ VectorResult Collect(const Program& program, const Outputs& outputs, const Reaso
       int why = out.value[i].why;
       if (why == kDefined && kill_why != kDefined) why = kill_why;
       if (why >= 0) reg.undefined[i] = reasons.Get(why);
+      // NV_vertex_program2's binding table: result.clip[n] is (d,*,*,*), one distance.
+      if (i > 0 && out.binding.kind == BindingKind::Result &&
+          out.binding.result == ResultReg::ClipDistance) {
+        reg.undefined[i] = "result.clip[n] holds only x, the distance (NV_vertex_program2)";
+      }
       reg.tolerance[i] = kill_unstable ? exec::kUnstable : out.value[i].err;
       reg.deviations[i] = out.value[i].dev | kill_dev;
     }
