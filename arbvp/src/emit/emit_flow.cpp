@@ -389,10 +389,11 @@ std::string REP(Context& ctx, const Instruction& inst) {
 // there it ends too (abnormally).
 std::string RET(Context& ctx, const Instruction& inst) {
   DeclareCallStack(ctx);
-  std::string back =
-      Has(ctx.program, Opcode::PUSHA)
-          ? fmt::format("arb_pc = arb_stack[arb_sp] >= 0 ? arb_stack[arb_sp] : {};\n", End(ctx))
-          : "arb_pc = arb_stack[arb_sp];\n";
+  std::string back = "arb_pc = arb_stack[arb_sp];\n";
+  if (Has(ctx.program, Opcode::PUSHA)) {
+    back +=
+        fmt::format("if (arb_pc < 0) arb_pc = {};  // an address register: the end\n", End(ctx));
+  }
   if (HasLoops(ctx.program)) {
     DeclareLoopStack(ctx);
     back +=

@@ -116,7 +116,8 @@ void main() {
               arb_pc = 15;  // empty call stack: the end
             } else {
               arb_sp -= 1;
-              arb_pc = arb_stack[arb_sp] >= 0 ? arb_stack[arb_sp] : 15;
+              arb_pc = arb_stack[arb_sp];
+              if (arb_pc < 0) arb_pc = 15;  // an address register: the end
             }
           }
         }
@@ -136,7 +137,8 @@ void main() {
                 arb_pc = 15;  // empty call stack: the end
               } else {
                 arb_sp -= 1;
-                arb_pc = arb_stack[arb_sp] >= 0 ? arb_stack[arb_sp] : 15;
+                arb_pc = arb_stack[arb_sp];
+                if (arb_pc < 0) arb_pc = 15;  // an address register: the end
               }
             }
           }
@@ -155,7 +157,8 @@ void main() {
               arb_pc = 15;  // empty call stack: the end
             } else {
               arb_sp -= 1;
-              arb_pc = arb_stack[arb_sp] >= 0 ? arb_stack[arb_sp] : 15;
+              arb_pc = arb_stack[arb_sp];
+              if (arb_pc < 0) arb_pc = 15;  // an address register: the end
             }
           }
         }
