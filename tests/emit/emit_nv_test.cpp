@@ -140,9 +140,12 @@ TEST(EmitNv, BranchesAndSubroutinesRunOnTheMachine) {
                   "MAX_PROGRAM_EXEC_INSTRUCTIONS_NV\n"
                   "    if (arb_pc >= 6) break;\n"))
       << g;
-  EXPECT_TRUE(HasRun(g, {"arb_pc = 2;", "if (arb_cc0.x > 0.0) {", "if (arb_sp == 4) {",
-                         "arb_pc = 6;  // call stack overflow: the end", "} else {",
-                         "arb_stack[arb_sp] = 2;", "arb_sp += 1;", "arb_pc = 3;"}))
+  EXPECT_TRUE(
+      HasRun(g, {"arb_pc = 2;", "if (arb_cc0.x > 0.0) {", "if (arb_sp == 4) {",
+                 "arb_pc = 6;  // call stack overflow: the end", "} else {",
+                 "if (arb_sp == 0) arb_stack[0] = 2;", "else if (arb_sp == 1) arb_stack[1] = 2;",
+                 "else if (arb_sp == 2) arb_stack[2] = 2;", "else arb_stack[3] = 2;",
+                 "arb_sp += 1;", "arb_pc = 3;"}))
       << g;
   EXPECT_TRUE(Has(g, "          // BRA done;\n          arb_pc = 5;\n")) << g;
   EXPECT_TRUE(
@@ -159,9 +162,13 @@ TEST(EmitNv, AddressStackOfVertexProgram3) {
   Translation t = Nv(ProgramKind::Vertex, "NV_vertex_program3",
                      "ADDRESS A0;\nARL A0, vertex.color;\nPUSHA A0;\nARL A0.x, 1;\nPOPA A0;\n"
                      "MOV result.position, vertex.position;\n");
-  EXPECT_TRUE(HasRun(t.glsl, {"if (arb_sp == 4) {", "arb_pc = 5;  // call stack overflow: the end",
-                              "} else {", "arb_stack[arb_sp] = -1;", "arb_saved[arb_sp] = A0;",
-                              "arb_sp += 1;", "arb_pc = 2;"}))
+  EXPECT_TRUE(HasRun(
+      t.glsl, {"if (arb_sp == 4) {", "arb_pc = 5;  // call stack overflow: the end", "} else {",
+               "if (arb_sp == 0) arb_stack[0] = -1;", "else if (arb_sp == 1) arb_stack[1] = -1;",
+               "else if (arb_sp == 2) arb_stack[2] = -1;", "else arb_stack[3] = -1;",
+               "if (arb_sp == 0) arb_saved[0] = A0;", "else if (arb_sp == 1) arb_saved[1] = A0;",
+               "else if (arb_sp == 2) arb_saved[2] = A0;", "else arb_saved[3] = A0;",
+               "arb_sp += 1;", "arb_pc = 2;"}))
       << t.glsl;
   EXPECT_TRUE(
       HasRun(t.glsl, {"if (arb_sp == 0 || arb_stack[arb_sp - 1] >= 0) {",
@@ -327,15 +334,21 @@ TEST(EmitNv, LoopsThatCouldPassTheLimitRunOnTheMachine) {
                      "PARAM n = program.local[0];\nTEMP t;\nREP n;\nREP n;\nADD t, t, 1;\n"
                      "ENDREP;\nENDREP;\nMOV result.color, t;\n");
   EXPECT_TRUE(HasRun(
-      t.glsl,
-      {"if (arb_ls == 4) {", "arb_pc = 6;  // MAX_PROGRAM_LOOP_DEPTH_NV blocks open: the end",
-       "} else {",
-       "arb_loops[arb_ls] = ivec3(int(clamp(floor(arb_fp_local[0].x), 0.0, 255.0)), 0, "
-       "arb_a0);",
-       "if (arb_loops[arb_ls].x > 0) {", "arb_ls += 1;", "arb_pc = 1;", "} else {", "arb_pc = 5;"}))
+      t.glsl, {"if (arb_ls == 4) {",
+               "arb_pc = 6;  // MAX_PROGRAM_LOOP_DEPTH_NV blocks open: the end", "} else {",
+               "arb_entry = ivec3(int(clamp(floor(arb_fp_local[0].x), 0.0, 255.0)), 0, arb_a0);",
+               "if (arb_entry.x > 0) {", "if (arb_ls == 0) arb_loops[0] = arb_entry;",
+               "else if (arb_ls == 1) arb_loops[1] = arb_entry;",
+               "else if (arb_ls == 2) arb_loops[2] = arb_entry;", "else arb_loops[3] = arb_entry;",
+               "arb_ls += 1;", "arb_pc = 1;", "} else {", "arb_pc = 5;"}))
       << t.glsl;
-  EXPECT_TRUE(HasRun(t.glsl, {"arb_loops[arb_ls - 1].x -= 1;", "if (arb_loops[arb_ls - 1].x > 0) {",
-                              "arb_pc = 2;", "} else {", "arb_ls -= 1;", "arb_pc = 4;"}))
+  EXPECT_TRUE(HasRun(
+      t.glsl,
+      {"arb_entry = arb_loops[arb_ls - 1];", "arb_entry.x -= 1;", "if (arb_entry.x > 0) {",
+       "if (arb_ls - 1 == 0) arb_loops[0] = arb_entry;",
+       "else if (arb_ls - 1 == 1) arb_loops[1] = arb_entry;",
+       "else if (arb_ls - 1 == 2) arb_loops[2] = arb_entry;", "else arb_loops[3] = arb_entry;",
+       "arb_pc = 2;", "} else {", "arb_ls -= 1;", "arb_pc = 4;"}))
       << t.glsl;
 }
 
@@ -343,7 +356,7 @@ TEST(EmitNv, SubroutinesOfFragmentProgram2LeaveTheirLoops) {
   Translation t = Nv(ProgramKind::Fragment, "NV_fragment_program2",
                      "PARAM c = { 2, 0, 1, 0 };\nTEMP t;\nCAL f;\nMOV result.color, t;\nRET;\n"
                      "f:\nLOOP c;\nADD t, t, 1;\nRET;\nENDLOOP;\nRET;\n");
-  EXPECT_TRUE(Has(t.glsl, "arb_stack_ls[arb_sp] = arb_ls;\n")) << t.glsl;
+  EXPECT_TRUE(Has(t.glsl, "if (arb_sp == 0) arb_stack_ls[0] = arb_ls;\n")) << t.glsl;
   EXPECT_TRUE(HasRun(
       t.glsl, {"arb_pc = arb_stack[arb_sp];", "if (arb_ls > arb_stack_ls[arb_sp]) {",
                "arb_a0 = arb_loops[arb_stack_ls[arb_sp]].z;", "arb_ls = arb_stack_ls[arb_sp];"}))

@@ -164,6 +164,23 @@ void DeclareLoopStack(Context& ctx) {
       ctx, "arb_loops",
       fmt::format("ivec3 arb_loops[{}];  // (count, increment, enclosing A0.x)", kMaxLoopDepth));
   DeclareLocal(ctx, "arb_a0", "int arb_a0 = 0;  // A0.x, the innermost LOOP's index");
+  DeclareLocal(ctx, "arb_entry", "ivec3 arb_entry = ivec3(0);  // a loop stack entry");
+}
+
+// `array[index] = value;` through constant indices: softpipe loses a store at a dynamic
+// index under divergent flow (Mesa 22.3; a read is right), which the machine's steps are.
+std::string StoreAt(const std::string& array, const std::string& index, const std::string& value,
+                    int size) {
+  std::string out;
+  for (int i = 0; i < size; ++i) {
+    const std::string store = fmt::format("{}[{}] = {};\n", array, i, value);
+    if (i + 1 == size) {
+      out += "else " + store;
+    } else {
+      out += fmt::format("{}if ({} == {}) {}", i ? "else " : "", index, i, store);
+    }
+  }
+  return out;
 }
 
 // The loop count of LOOP and REP: floor(x), "limited to MAX_PROGRAM_LOOP_COUNT_NV".
@@ -191,11 +208,11 @@ std::string EndProgram(const Context& ctx, std::string_view why) {
 // positive.
 std::string MachineLoop(Context& ctx, const Instruction& inst, bool loop) {
   DeclareLoopStack(ctx);
-  std::string enter = "arb_ls += 1;\n";
+  std::string enter = StoreAt("arb_loops", "arb_ls", "arb_entry", kMaxLoopDepth) + "arb_ls += 1;\n";
   if (loop) enter += fmt::format("arb_a0 = {};\n", LoopFloor(ctx, inst, 1));
   enter += fmt::format("arb_pc = {};\n", ctx.pc + 1);
   std::string push = fmt::format(
-      "arb_loops[arb_ls] = ivec3({}, {}, arb_a0);\nif (arb_loops[arb_ls].x > 0) {{\n{}}} else "
+      "arb_entry = ivec3({}, {}, arb_a0);\nif (arb_entry.x > 0) {{\n{}}} else "
       "{{\n  arb_pc = {};\n}}\n",
       LoopCount(ctx, inst), loop ? LoopFloor(ctx, inst, 2) : "0", IndentBy(enter, 1),
       inst.jump + 1);
@@ -208,14 +225,15 @@ std::string MachineLoop(Context& ctx, const Instruction& inst, bool loop) {
 // 0) continue at the top", else the block's entry is popped (and the enclosing A0.x back).
 std::string MachineEndLoop(Context& ctx, const Instruction& inst, bool loop) {
   DeclareLoopStack(ctx);
-  std::string out = "arb_loops[arb_ls - 1].x -= 1;\n";
-  if (loop) out += "arb_a0 += arb_loops[arb_ls - 1].y;\n";
+  std::string out = "arb_entry = arb_loops[arb_ls - 1];\narb_entry.x -= 1;\n";
+  if (loop) out += "arb_a0 += arb_entry.y;\n";
+  std::string again = StoreAt("arb_loops", "arb_ls - 1", "arb_entry", kMaxLoopDepth) +
+                      fmt::format("arb_pc = {};\n", inst.jump + 1);
   std::string pop = "arb_ls -= 1;\n";
-  if (loop) pop += "arb_a0 = arb_loops[arb_ls].z;\n";
+  if (loop) pop += "arb_a0 = arb_entry.z;\n";
   pop += fmt::format("arb_pc = {};\n", ctx.pc + 1);
-  return out +
-         fmt::format("if (arb_loops[arb_ls - 1].x > 0) {{\n  arb_pc = {};\n}} else {{\n{}}}\n",
-                     inst.jump + 1, IndentBy(pop, 1));
+  return out + fmt::format("if (arb_entry.x > 0) {{\n{}}} else {{\n{}}}\n", IndentBy(again, 1),
+                           IndentBy(pop, 1));
 }
 
 // Structured LOOP and REP: a counter (and LOOP's index and increment) per block.
@@ -300,12 +318,12 @@ bool HasLoops(const Program& p) { return Has(p, Opcode::LOOP) || Has(p, Opcode::
 // entries the program ends. The open loop blocks are noted: RET leaves the callee's.
 std::string CAL(Context& ctx, const Instruction& inst) {
   DeclareCallStack(ctx);
-  std::string push = fmt::format("arb_stack[arb_sp] = {};\n", ctx.pc + 1);
+  std::string push = StoreAt("arb_stack", "arb_sp", std::to_string(ctx.pc + 1), kMaxCallDepth);
   if (HasLoops(ctx.program)) {
     DeclareLocal(
         ctx, "arb_stack_ls",
         fmt::format("int arb_stack_ls[{}];  // the open loop blocks at each CAL", kMaxCallDepth));
-    push += "arb_stack_ls[arb_sp] = arb_ls;\n";
+    push += StoreAt("arb_stack_ls", "arb_sp", "arb_ls", kMaxCallDepth);
   }
   push += fmt::format("arb_sp += 1;\narb_pc = {};\n", inst.jump);
   std::string call =
@@ -372,9 +390,10 @@ std::string PUSHA(Context& ctx, const Instruction& inst) {
   DeclareLocal(
       ctx, "arb_saved",
       fmt::format("ivec4 arb_saved[{}];  // address registers PUSHA saved", kMaxCallDepth));
-  std::string push =
-      fmt::format("arb_stack[arb_sp] = -1;\narb_saved[arb_sp] = {};\narb_sp += 1;\narb_pc = {};\n",
-                  ctx.var_names[static_cast<size_t>(Src(inst, 0).var)], ctx.pc + 1);
+  std::string push = StoreAt("arb_stack", "arb_sp", "-1", kMaxCallDepth) +
+                     StoreAt("arb_saved", "arb_sp",
+                             ctx.var_names[static_cast<size_t>(Src(inst, 0).var)], kMaxCallDepth) +
+                     fmt::format("arb_sp += 1;\narb_pc = {};\n", ctx.pc + 1);
   return fmt::format("if (arb_sp == {}) {{\n{}}} else {{\n{}}}\n", kMaxCallDepth,
                      IndentBy(EndProgram(ctx, "call stack overflow: the end"), 1),
                      IndentBy(push, 1));

@@ -49,8 +49,14 @@ void main() {
             if (arb_sp == 4) {
               arb_pc = 15;  // call stack overflow: the end
             } else {
-              arb_stack[arb_sp] = -1;
-              arb_saved[arb_sp] = A0;
+              if (arb_sp == 0) arb_stack[0] = -1;
+              else if (arb_sp == 1) arb_stack[1] = -1;
+              else if (arb_sp == 2) arb_stack[2] = -1;
+              else arb_stack[3] = -1;
+              if (arb_sp == 0) arb_saved[0] = A0;
+              else if (arb_sp == 1) arb_saved[1] = A0;
+              else if (arb_sp == 2) arb_saved[2] = A0;
+              else arb_saved[3] = A0;
               arb_sp += 1;
               arb_pc = 3;
             }
@@ -65,7 +71,10 @@ void main() {
               if (arb_sp == 4) {
                 arb_pc = 15;  // call stack overflow: the end
               } else {
-                arb_stack[arb_sp] = 4;
+                if (arb_sp == 0) arb_stack[0] = 4;
+                else if (arb_sp == 1) arb_stack[1] = 4;
+                else if (arb_sp == 2) arb_stack[2] = 4;
+                else arb_stack[3] = 4;
                 arb_sp += 1;
                 arb_pc = 11;
               }
