@@ -10,6 +10,7 @@
 #include "charset.h"
 #include "diag.h"
 #include "extensions.h"
+#include "frag_coord.h"
 #include "function_names.h"
 #include "gpu4_preamble.h"
 #include "scan.h"
@@ -197,6 +198,7 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
                              const CheckOptions& options, compiler::DiagnosticSink* sink) {
   PreparedShader out;
   out.files = sources;
+  std::vector<std::string> strings;  // the user's offsets: rewritten once the preamble is made
   for (size_t i = 0; i < sources.size(); ++i) {
     const SourceFile& file = *sources[i];
     std::string text = ReportInvalidCharacters(file, sink);
@@ -209,7 +211,7 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
       if (!out.checked) return out;
       ReadExtensions(stage, file, directives, options, &text, &out, sink);
     }
-    out.texts.push_back(PrepareForGlslang(text));
+    strings.push_back(std::move(text));
   }
   // ARB_texture_rectangle: "the compiler behaves as if #extension GL_ARB_texture_rectangle :
   // require" is present, where the implementation supports the extension.
@@ -227,10 +229,6 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
     }
   }
   if (out.gpu4()) {
-    if (out.version_offset != std::string::npos) {
-      out.texts.front().replace(out.version_offset, 3, "130");
-    }
-    for (std::string& text : out.texts) RewriteGpu4Words(stage, &text);
     out.preamble +=
         Gpu4Preamble(stage == Stage::Vertex, out.gpu_shader4, out.texture_array, has_rectangle);
     if (out.gpu_shader4) {
@@ -253,6 +251,18 @@ PreparedShader PrepareShader(Stage stage, const std::vector<const SourceFile*>& 
     out.preamble_file = options.preprocessor.preamble;
     out.preamble += PrepareForGlslang(options.preprocessor.preamble->text());
     if (!out.preamble.empty() && out.preamble.back() != '\n') out.preamble += '\n';
+  }
+  // The conditional groups of the strings follow the preamble's macros.
+  const Extension* frag_coord = FindExtension("GL_ARB_fragment_coord_conventions");
+  HideFragCoordRedeclarations(stage, sources, out.preamble,
+                              frag_coord != nullptr && ProfileHas(options.profile, *frag_coord),
+                              &strings, sink);
+  for (const std::string& text : strings) out.texts.push_back(PrepareForGlslang(text));
+  if (out.gpu4()) {
+    if (out.version_offset != std::string::npos) {
+      out.texts.front().replace(out.version_offset, 3, "130");
+    }
+    for (std::string& text : out.texts) RewriteGpu4Words(stage, &text);
   }
   // 1.20 4.2 puts functions in the name space of variables; 1.10 gives them their own.
   if (out.version == 110) {

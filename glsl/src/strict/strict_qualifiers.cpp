@@ -10,6 +10,7 @@
 #include <cctype>
 #include <set>
 
+#include "../frag_coord.h"
 #include "../source_text.h"
 #include "strict.h"
 
@@ -229,17 +230,21 @@ void CheckVaryingTypes(const StrictContext& ctx, TIntermNode* root) {
 // ARB_explicit_attrib_location (and ARB_fragment_coord_conventions for gl_FragCoord) put
 // layout qualifiers on `in` and `out` declarations: `layout(...) attribute` or `varying` is
 // none of them (Mesa: "`layout' qualifier may not be used with `attribute' or `varying'").
-// glslang 12 takes it.
+// glslang 12 takes it. A layout naming ARB_fragment_coord_conventions' identifiers is judged
+// before glslang, with the redeclarations of gl_FragCoord (frag_coord.h).
 void CheckLayoutStorage(const StrictContext& ctx) {
   for (const compiler::SourceFile* file : ctx.sources) {
     const std::vector<Token>& tokens = SourceTokens(ctx, file);
     for (size_t i = 0; i + 1 < tokens.size(); ++i) {
       if (tokens[i].text != "layout" || tokens[i + 1].text != "(") continue;
       size_t j = i + 1;
+      bool frag_coord = false;  // judged with gl_FragCoord's redeclarations (frag_coord.h)
       for (int depth = 0; j < tokens.size(); ++j) {
         if (tokens[j].text == "(") ++depth;
         if (tokens[j].text == ")" && --depth == 0) break;
+        frag_coord = frag_coord || IsFragCoordLayoutId(tokens[j].text);
       }
+      if (frag_coord) continue;
       // Other qualifiers (invariant, centroid, flat, ...) may stand between.
       for (++j; j < tokens.size() && tokens[j].kind == Token::Identifier; ++j) {
         std::string_view t = tokens[j].text;
