@@ -19,6 +19,13 @@ foreach(lib compiler arbvp glsl runtime)
     INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${lib}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
+# arbvp is three libraries (front end, emitter, interpreter) behind arbiter::arbvp.
+foreach(part front emit exec)
+  set_target_properties(arbiter_arbvp_${part} PROPERTIES EXPORT_NAME arbvp_${part})
+  install(TARGETS arbiter_arbvp_${part}
+    EXPORT arbiterLibraryTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endforeach()
 
 # Static libraries compiled with sanitizers need the sanitizer runtimes in the program that
 # links them: the installed targets carry the build's -fsanitize flags to their users.
