@@ -464,11 +464,7 @@ class Parser {
       for (const OptionInfo& info : AllOptions()) names.push_back(info.spelling);
       std::string hint = ClosestMatch(Text(name), names);
       std::string why;
-      if (Is(Text(name).substr(0, 3), "NV_")) {
-        why = "; NV program options are not supported";
-      } else if (!hint.empty()) {
-        why = fmt::format(" (did you mean '{}'?)", hint);
-      }
+      if (!hint.empty()) why = fmt::format(" (did you mean '{}'?)", hint);
       Report(Diag::OptionUnknown, RangeOf(name),
              fmt::format("unknown program option '{}'{}", Text(name), why));
     } else {
