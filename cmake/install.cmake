@@ -19,6 +19,10 @@ foreach(lib compiler arbvp glsl runtime)
     INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${lib}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
+# glstate is header-only (an INTERFACE library): its headers and its target.
+set_target_properties(arbiter_glstate PROPERTIES EXPORT_NAME glstate)
+install(TARGETS arbiter_glstate EXPORT arbiterLibraryTargets)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/glstate/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # arbvp is three libraries (front end, emitter, interpreter) behind arbiter::arbvp.
 foreach(part front emit exec)
   set_target_properties(arbiter_arbvp_${part} PROPERTIES EXPORT_NAME arbvp_${part})

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "arbiter/compiler/source.h"
+#include "arbiter/glstate/state_items.h"
 
 namespace arbiter::arbvp {
 
@@ -147,40 +148,11 @@ enum class ResultReg : uint8_t {
   FragDepth,
 };
 
-enum class Face : uint8_t { Front, Back };
-
-enum class StateItem : uint8_t {
-  MaterialAmbient,
-  MaterialDiffuse,
-  MaterialSpecular,
-  MaterialEmission,
-  MaterialShininess,
-  LightAmbient,
-  LightDiffuse,
-  LightSpecular,
-  LightPosition,
-  LightAttenuation,
-  LightSpotDirection,
-  LightHalf,
-  LightModelAmbient,
-  LightModelSceneColor,
-  LightProdAmbient,
-  LightProdDiffuse,
-  LightProdSpecular,
-  TexGenEye,     // coord = s t r q
-  TexGenObject,  // coord = s t r q
-  FogColor,
-  FogParams,
-  ClipPlane,
-  PointSize,
-  PointAttenuation,
-  TexEnvColor,
-  DepthRange,
-  MatrixRow,  // matrix, modifier, row
-};
-
-enum class MatrixName : uint8_t { Modelview, Projection, Mvp, Texture, Palette, Program };
-enum class MatrixModifier : uint8_t { None, Inverse, Transpose, InvTrans };
+// The GL state vocabulary (state_items.def) is glstate's, shared with the host library.
+using glstate::Face;
+using glstate::MatrixModifier;
+using glstate::MatrixName;
+using glstate::StateItem;
 
 struct Binding {
   BindingKind kind = BindingKind::Constant;
@@ -277,7 +249,7 @@ struct DstOperand {
 enum class Precision : uint8_t { Default, R, H, X };
 
 enum class TexTarget : uint8_t {
-#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, spec) name,
+#define ARBVP_TEX_TARGET(name, ...) name,
 #include "arbiter/arbvp/texture_targets.def"
 #undef ARBVP_TEX_TARGET
 };
