@@ -11,7 +11,7 @@ set(ARBITER_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/arbiter)
 set_target_properties(arbiter PROPERTIES EXPORT_NAME arbiter)
 install(TARGETS arbiter EXPORT arbiterToolTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-foreach(lib compiler arbvp glsl runtime)
+foreach(lib compiler arbvp glsl targets runtime)
   set_target_properties(arbiter_${lib} PROPERTIES EXPORT_NAME ${lib})
   install(TARGETS arbiter_${lib}
     EXPORT arbiterLibraryTargets
