@@ -14,45 +14,20 @@ namespace {
 
 std::string_view FaceName(Face face) { return face == Face::Back ? "back" : "front"; }
 
-// How each state binding is spelled, in StateItem order, as the specs write them: {f} is
-// the face, {i} the index, {c} the texgen coordinate, {m} the matrix (kMatrixSpellings) and
-// its modifier, {r} the row. StateName writes these; KeyOf keys exactly the fields a
-// spelling shows (kStateFields), so equal names give equal keys.
-constexpr std::string_view kStateSpellings[] = {
-    "state.material.{f}.ambient",
-    "state.material.{f}.diffuse",
-    "state.material.{f}.specular",
-    "state.material.{f}.emission",
-    "state.material.{f}.shininess",
-    "state.light[{i}].ambient",
-    "state.light[{i}].diffuse",
-    "state.light[{i}].specular",
-    "state.light[{i}].position",
-    "state.light[{i}].attenuation",
-    "state.light[{i}].spot.direction",
-    "state.light[{i}].half",
-    "state.lightmodel.ambient",
-    "state.lightmodel.{f}.scenecolor",
-    "state.lightprod[{i}].{f}.ambient",
-    "state.lightprod[{i}].{f}.diffuse",
-    "state.lightprod[{i}].{f}.specular",
-    "state.texgen[{i}].eye.{c}",
-    "state.texgen[{i}].object.{c}",
-    "state.fog.color",
-    "state.fog.params",
-    "state.clip[{i}].plane",
-    "state.point.size",
-    "state.point.attenuation",
-    "state.texenv[{i}].color",
-    "state.depth.range",
-    "state.matrix.{m}.row[{r}]",
-};
-static_assert(std::size(kStateSpellings) == static_cast<size_t>(StateItem::MatrixRow) + 1);
-
-// In MatrixName order; then MatrixModifier's suffixes.
-constexpr std::string_view kMatrixSpellings[] = {"modelview[{i}]", "projection",   "mvp",
-                                                 "texture[{i}]",   "palette[{i}]", "program[{i}]"};
-static_assert(std::size(kMatrixSpellings) == static_cast<size_t>(MatrixName::Program) + 1);
+// How each state binding is spelled (state_items.def), as the specs write them: {f} is the
+// face, {i} the index, {c} the texgen coordinate, {m} the matrix (its own spelling) and its
+// modifier, {r} the row. StateName writes these; KeyOf keys exactly the fields a spelling
+// shows (kStateFields), so equal names give equal keys.
+constexpr auto kStateSpellings = [] {
+  std::array<std::string_view, std::size(glstate::kStateItems)> spellings{};
+  for (size_t i = 0; i < spellings.size(); ++i) spellings[i] = glstate::kStateItems[i].spelling;
+  return spellings;
+}();
+constexpr auto kMatrixSpellings = [] {
+  std::array<std::string_view, std::size(glstate::kStateMatrices)> spellings{};
+  for (size_t i = 0; i < spellings.size(); ++i) spellings[i] = glstate::kStateMatrices[i].spelling;
+  return spellings;
+}();
 constexpr std::string_view kModifierSpellings[] = {"", ".inverse", ".transpose", ".invtrans"};
 static_assert(std::size(kModifierSpellings) == static_cast<size_t>(MatrixModifier::InvTrans) + 1);
 

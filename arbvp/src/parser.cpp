@@ -1150,143 +1150,83 @@ class Parser {
   [[nodiscard]] bool ParseStateItem(std::vector<Binding>* out, bool multiple) {
     Token start = Advance();
     if (!ExpectDot("state")) return false;
-    std::vector<std::string_view> items = {"material",  "light", "lightmodel",
-                                           "lightprod", "fog",   "matrix"};
-    if (vp()) {
-      items.insert(items.end(), {"texgen", "clip", "point"});
-    } else {
-      items.insert(items.end(), {"texenv", "depth"});
-    }
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
-      std::string_view w = Text(t);
-      if (vp() && (Is(w, "texenv") || Is(w, "depth"))) {
+      const glstate::StateGroupInfo* group = glstate::FindStateGroup(Text(t));
+      if (group && !glstate::GroupInStage(*group, vp())) {
         return Fail(Diag::BindingStage, RangeOf(t),
-                    fmt::format("'state.{}' is available only in fragment programs", w));
-      }
-      if (fp() && (Is(w, "texgen") || Is(w, "clip") || Is(w, "point"))) {
-        return Fail(Diag::BindingStage, RangeOf(t),
-                    fmt::format("'state.{}' is available only in vertex programs", w));
+                    fmt::format("'state.{}' is available only in {} programs", group->word,
+                                vp() ? "fragment" : "vertex"));
       }
     }
-    Token item;
-    if (!ExpectWordSlow(items, "state binding", &item)) return false;
-    std::string_view w = Text(item);
+    std::vector<std::string_view> groups;
+    for (const glstate::StateGroupInfo& group : glstate::kStateGroups) {
+      if (glstate::GroupInStage(group, vp())) groups.push_back(group.word);
+    }
+    Token word;
+    if (!ExpectWordSlow(groups, "state binding", &word)) return false;
+    const glstate::StateGroupInfo& group = *glstate::FindStateGroup(Text(word));
     Binding b;
     b.kind = BindingKind::State;
-    b.selector = RangeOf(item);
-    if (Is(w, "matrix")) return ParseMatrixItem(start, b, out, multiple);
-    if (!ParseStateProperty(w, &b)) return false;
+    b.selector = RangeOf(word);
+    if (group.word == "matrix") return ParseMatrixItem(start, b, out, multiple);
+    if (!ParseStateProperty(group, &b)) return false;
     b.range = {start.begin, last_end_};
     out->push_back(b);
     return true;
   }
 
-  // The rest of a state binding other than "matrix", after the item word `w`.
-  [[nodiscard]] bool ParseStateProperty(std::string_view w, Binding* b) {
-    std::string_view word;
+  // The rest of a state binding after its group word, as state_items.def lists it: the
+  // selector, the face, the property words and the texgen coordinate.
+  [[nodiscard]] bool ParseStateProperty(const glstate::StateGroupInfo& group, Binding* b) {
+    if (group.selector != glstate::StateSelector::None) {
+      const glstate::StateSelectorInfo& selector = glstate::GetStateSelectorInfo(group.selector);
+      const std::string what = fmt::format("a {} number", selector.noun);
+      if (!(selector.required ? ParseRequiredIndex(b, what) : ParseOptionalIndex(b, what))) {
+        return false;
+      }
+    }
+    std::string_view after = b->indexed ? "]" : group.word;
+    std::string_view face;
+    if (group.faced && AcceptDotWord({"front", "back"}, &face)) {
+      b->face = Is(face, "back") ? Face::Back : Face::Front;
+      after = face;
+    }
+    // The items of the group this spelling can still name, and their first property words.
+    auto first_word = [](std::string_view property) {
+      return property.substr(0, property.find('.'));
+    };
+    std::vector<const glstate::StateItemInfo*> items;
+    std::vector<std::string_view> words;
+    for (const glstate::StateItemInfo& info : glstate::kStateItems) {
+      if (info.group != group.word || (!face.empty() && !info.faced)) continue;
+      items.push_back(&info);
+      words.push_back(first_word(info.property));
+    }
     Token prop;
-    if (Is(w, "material")) {
-      // <stateMaterialItem> ::= "material" <optFaceType> "." <stateMatProperty>
-      if (AcceptDotWord({"front", "back"}, &word))
-        b->face = Is(word, "back") ? Face::Back : Face::Front;
-      if (!ExpectDot("material")) return false;
-      if (!ExpectWord({"ambient", "diffuse", "specular", "emission", "shininess"},
-                      "material property", &prop)) {
+    if (!ExpectDot(after) || !ExpectWordSlow(words, group.noun, &prop)) return false;
+    const glstate::StateItemInfo& item =
+        **std::find_if(items.begin(), items.end(), [&](const glstate::StateItemInfo* info) {
+          return first_word(info->property) == Text(prop);
+        });
+    b->state = item.item;
+    // A property of several words ("spot.direction").
+    std::string_view previous = Text(prop);
+    for (std::string_view rest = item.property.substr(previous.size()); !rest.empty();) {
+      rest.remove_prefix(1);  // the '.'
+      const std::string_view next = first_word(rest);
+      if (!ExpectDot(previous) || !ExpectWord({next}, fmt::format("{} property", previous))) {
         return false;
       }
-      std::string_view p = Text(prop);
-      b->state = Is(p, "ambient")    ? StateItem::MaterialAmbient
-                 : Is(p, "diffuse")  ? StateItem::MaterialDiffuse
-                 : Is(p, "specular") ? StateItem::MaterialSpecular
-                 : Is(p, "emission") ? StateItem::MaterialEmission
-                                     : StateItem::MaterialShininess;
-    } else if (Is(w, "light")) {
-      // <stateLightItem> ::= "light" "[" <stateLightNumber> "]" "." <stateLightProperty>
-      if (!ParseRequiredIndex(b, "a light number") || !ExpectDot("]")) return false;
-      if (!ExpectWord({"ambient", "diffuse", "specular", "position", "attenuation", "spot", "half"},
-                      "light property", &prop)) {
-        return false;
-      }
-      std::string_view p = Text(prop);
-      if (Is(p, "spot")) {
-        if (!ExpectDot("spot") || !ExpectWord({"direction"}, "spot property")) return false;
-        b->state = StateItem::LightSpotDirection;
-      } else {
-        b->state = Is(p, "ambient")    ? StateItem::LightAmbient
-                   : Is(p, "diffuse")  ? StateItem::LightDiffuse
-                   : Is(p, "specular") ? StateItem::LightSpecular
-                   : Is(p, "position") ? StateItem::LightPosition
-                   : Is(p, "half")     ? StateItem::LightHalf
-                                       : StateItem::LightAttenuation;
-      }
-    } else if (Is(w, "lightmodel")) {
-      // <stateLModProperty> ::= "." "ambient" | <optFaceType> "." "scenecolor"
-      if (AcceptDotWord({"front", "back"}, &word)) {
-        b->face = Is(word, "back") ? Face::Back : Face::Front;
-        if (!ExpectDot(word) || !ExpectWord({"scenecolor"}, "light model property")) return false;
-        b->state = StateItem::LightModelSceneColor;
-      } else {
-        if (!ExpectDot("lightmodel") ||
-            !ExpectWord({"ambient", "scenecolor"}, "light model property", &prop)) {
-          return false;
-        }
-        b->state = Is(Text(prop), "ambient") ? StateItem::LightModelAmbient
-                                             : StateItem::LightModelSceneColor;
-      }
-    } else if (Is(w, "lightprod")) {
-      // <stateLightProdItem> ::= "lightprod" "[" n "]" <optFaceType> "." <stateLProdProperty>
-      if (!ParseRequiredIndex(b, "a light number")) return false;
-      if (AcceptDotWord({"front", "back"}, &word))
-        b->face = Is(word, "back") ? Face::Back : Face::Front;
-      if (!ExpectDot("]") ||
-          !ExpectWord({"ambient", "diffuse", "specular"}, "light product property", &prop)) {
-        return false;
-      }
-      std::string_view p = Text(prop);
-      b->state = Is(p, "ambient")   ? StateItem::LightProdAmbient
-                 : Is(p, "diffuse") ? StateItem::LightProdDiffuse
-                                    : StateItem::LightProdSpecular;
-    } else if (Is(w, "texgen")) {
-      // <stateTexGenItem> ::= "texgen" <optTexCoordNum> "." <stateTexGenType> "." <coord>
-      if (!ParseOptionalIndex(b, "a texture unit number") || !ExpectDot("texgen")) return false;
-      Token type;
-      if (!ExpectWord({"eye", "object"}, "texgen plane type", &type)) return false;
-      b->state = Is(Text(type), "eye") ? StateItem::TexGenEye : StateItem::TexGenObject;
+      previous = next;
+      rest.remove_prefix(next.size());
+    }
+    if (group.coord) {
       Token coord;
-      if (!ExpectDot(Text(type)) ||
-          !ExpectWord({"s", "t", "r", "q"}, "texgen coordinate", &coord)) {
+      if (!ExpectDot(previous) || !ExpectWord({"s", "t", "r", "q"}, "texgen coordinate", &coord)) {
         return false;
       }
-      std::string_view c = Text(coord);
-      b->coord = Is(c, "s") ? 0 : Is(c, "t") ? 1 : Is(c, "r") ? 2 : 3;
-    } else if (Is(w, "fog")) {
-      if (!ExpectDot("fog") || !ExpectWord({"color", "params"}, "fog property", &prop)) {
-        return false;
-      }
-      b->state = Is(Text(prop), "color") ? StateItem::FogColor : StateItem::FogParams;
-    } else if (Is(w, "clip")) {
-      // <stateClipPlaneItem> ::= "clip" "[" n "]" "." "plane"
-      if (!ParseRequiredIndex(b, "a clip plane number") || !ExpectDot("]") ||
-          !ExpectWord({"plane"}, "clip plane property")) {
-        return false;
-      }
-      b->state = StateItem::ClipPlane;
-    } else if (Is(w, "point")) {
-      if (!ExpectDot("point") || !ExpectWord({"size", "attenuation"}, "point property", &prop)) {
-        return false;
-      }
-      b->state = Is(Text(prop), "size") ? StateItem::PointSize : StateItem::PointAttenuation;
-    } else if (Is(w, "texenv")) {
-      // <stateTexEnvItem> ::= "texenv" <optLegacyTexUnitNum> "." "color"
-      if (!ParseOptionalIndex(b, "a texture unit number") || !ExpectDot("texenv") ||
-          !ExpectWord({"color"}, "texture environment property")) {
-        return false;
-      }
-      b->state = StateItem::TexEnvColor;
-    } else {  // "depth"
-      if (!ExpectDot("depth") || !ExpectWord({"range"}, "depth property")) return false;
-      b->state = StateItem::DepthRange;
+      b->coord = static_cast<uint8_t>(std::string_view("strq").find(Text(coord)));
     }
     return true;
   }
@@ -1297,32 +1237,20 @@ class Parser {
                                      bool multiple) {
     b.state = StateItem::MatrixRow;
     if (!ExpectDot("matrix")) return false;
+    std::vector<std::string_view> names;
+    for (const glstate::StateMatrixInfo& info : glstate::kStateMatrices) names.push_back(info.word);
     Token name;
-    if (!ExpectWord({"modelview", "projection", "mvp", "texture", "palette", "program"},
-                    "matrix name", &name)) {
-      return false;
-    }
-    std::string_view n = Text(name);
+    if (!ExpectWordSlow(names, "matrix name", &name)) return false;
+    const glstate::StateMatrixInfo& matrix = *std::find_if(
+        std::begin(glstate::kStateMatrices), std::end(glstate::kStateMatrices),
+        [&](const glstate::StateMatrixInfo& info) { return info.word == Text(name); });
     b.selector = RangeOf(name);
     b.item = RangeOf(name);
-    bool ok = true;
-    if (Is(n, "modelview")) {
-      b.matrix = MatrixName::Modelview;
-      ok = ParseOptionalIndex(&b, "a modelview matrix number");
-    } else if (Is(n, "projection")) {
-      b.matrix = MatrixName::Projection;
-    } else if (Is(n, "mvp")) {
-      b.matrix = MatrixName::Mvp;
-    } else if (Is(n, "texture")) {
-      b.matrix = MatrixName::Texture;
-      ok = ParseOptionalIndex(&b, "a texture unit number");
-    } else if (Is(n, "palette")) {
-      b.matrix = MatrixName::Palette;
-      ok = ParseRequiredIndex(&b, "a palette matrix number");
-    } else {
-      b.matrix = MatrixName::Program;
-      ok = ParseRequiredIndex(&b, "a program matrix number");
-    }
+    b.matrix = matrix.matrix;
+    const std::string what = fmt::format("a {} number", matrix.noun);
+    const bool ok = matrix.index == glstate::MatrixIndex::Required   ? ParseRequiredIndex(&b, what)
+                    : matrix.index == glstate::MatrixIndex::Optional ? ParseOptionalIndex(&b, what)
+                                                                     : true;
     if (!ok) return false;
     std::string_view word;
     if (AcceptDotWord({"inverse", "transpose", "invtrans"}, &word)) {

@@ -96,81 +96,53 @@ void CheckResultBinding(const CheckContext& ctx, const Binding& b) {
   }
 }
 
-void CheckState(const CheckContext& ctx, const Binding& b) {
-  switch (b.state) {
-    case StateItem::LightAmbient:
-    case StateItem::LightDiffuse:
-    case StateItem::LightSpecular:
-    case StateItem::LightPosition:
-    case StateItem::LightAttenuation:
-    case StateItem::LightSpotDirection:
-    case StateItem::LightHalf:
-    case StateItem::LightProdAmbient:
-    case StateItem::LightProdDiffuse:
-    case StateItem::LightProdSpecular:
-      CheckSelector(ctx, b, "gl.max_lights", "light");
-      return;
-    case StateItem::TexGenEye:
-    case StateItem::TexGenObject:
-      CheckSelector(ctx, b, "arbvp.max_texture_units", "texture unit");
-      return;
-    case StateItem::ClipPlane:
-      CheckSelector(ctx, b, "gl.max_clip_planes", "clip plane");
-      return;
-    case StateItem::TexEnvColor:
-      CheckSelector(ctx, b, "arbfp.max_texture_units", "texture unit");
-      return;
-    case StateItem::MatrixRow:
-      switch (b.matrix) {
-        case MatrixName::Modelview:
-          if (b.index > 0) {
-            if (!Supported(ctx, "arbvp.max_vertex_units")) {
-              ctx.Report(Diag::BindingUnsupported, b.selector,
-                         fmt::format("'state.matrix.modelview[{}]' needs ARB_vertex_blend, "
-                                     "which profile '{}' does not support; only modelview[0] "
-                                     "exists",
-                                     b.index, EnforcedName(ctx)));
-              return;
-            }
-            CheckSelector(ctx, b, "arbvp.max_vertex_units", "modelview matrix");
-          }
+// The selector of a state.matrix binding: matrices of other extensions first need them.
+void CheckMatrix(const CheckContext& ctx, const Binding& b) {
+  switch (b.matrix) {
+    case MatrixName::Modelview:
+      if (b.index > 0) {
+        if (!Supported(ctx, "arbvp.max_vertex_units")) {
+          ctx.Report(Diag::BindingUnsupported, b.selector,
+                     fmt::format("'state.matrix.modelview[{}]' needs ARB_vertex_blend, "
+                                 "which profile '{}' does not support; only modelview[0] "
+                                 "exists",
+                                 b.index, EnforcedName(ctx)));
           return;
-        case MatrixName::Palette:
-          if (!Supported(ctx, "arbvp.max_palette_matrices")) {
-            ctx.Report(Diag::BindingUnsupported, b.item,
-                       fmt::format("'state.matrix.palette' needs ARB_matrix_palette, which "
-                                   "profile '{}' does not support",
-                                   EnforcedName(ctx)));
-            return;
-          }
-          CheckSelector(ctx, b, "arbvp.max_palette_matrices", "palette matrix");
-          return;
-        case MatrixName::Program:
-          CheckSelector(ctx, b, "gl.max_program_matrices", "program matrix");
-          return;
-        case MatrixName::Texture:
-          CheckSelector(ctx, b, ctx.vp() ? "arbvp.max_texture_units" : "arbfp.max_texture_coords",
-                        "texture matrix");
-          return;
-        case MatrixName::Projection:
-        case MatrixName::Mvp:
-          return;
+        }
+        CheckSelector(ctx, b, "arbvp.max_vertex_units", "modelview matrix");
       }
       return;
-    case StateItem::MaterialAmbient:
-    case StateItem::MaterialDiffuse:
-    case StateItem::MaterialSpecular:
-    case StateItem::MaterialEmission:
-    case StateItem::MaterialShininess:
-    case StateItem::LightModelAmbient:
-    case StateItem::LightModelSceneColor:
-    case StateItem::FogColor:
-    case StateItem::FogParams:
-    case StateItem::PointSize:
-    case StateItem::PointAttenuation:
-    case StateItem::DepthRange:
+    case MatrixName::Palette:
+      if (!Supported(ctx, "arbvp.max_palette_matrices")) {
+        ctx.Report(Diag::BindingUnsupported, b.item,
+                   fmt::format("'state.matrix.palette' needs ARB_matrix_palette, which "
+                               "profile '{}' does not support",
+                               EnforcedName(ctx)));
+        return;
+      }
+      CheckSelector(ctx, b, "arbvp.max_palette_matrices", "palette matrix");
+      return;
+    case MatrixName::Program:
+      CheckSelector(ctx, b, "gl.max_program_matrices", "program matrix");
+      return;
+    case MatrixName::Texture:
+      CheckSelector(ctx, b, ctx.vp() ? "arbvp.max_texture_units" : "arbfp.max_texture_coords",
+                    "texture matrix");
+      return;
+    case MatrixName::Projection:
+    case MatrixName::Mvp:
       return;
   }
+}
+
+// The selector of any other state binding, against its limit in state_items.def.
+void CheckState(const CheckContext& ctx, const Binding& b) {
+  if (b.state == StateItem::MatrixRow) return CheckMatrix(ctx, b);
+  const glstate::StateGroupInfo* group =
+      glstate::FindStateGroup(glstate::GetStateItemInfo(b.state).group);
+  if (!group || group->selector == glstate::StateSelector::None) return;
+  const glstate::StateSelectorInfo& selector = glstate::GetStateSelectorInfo(group->selector);
+  CheckSelector(ctx, b, selector.limit, selector.noun);
 }
 
 // ARBvp 2.14.3.2: "A vertex program will fail to load if any GL state vector is bound

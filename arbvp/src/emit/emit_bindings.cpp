@@ -44,20 +44,8 @@ std::string Face(const Binding& b, const char* front, const char* back) {
 
 // The built-in matrix for a matrix binding, or "" when GLSL 1.10 has none.
 std::string BuiltinMatrix(const Binding& b) {
-  switch (b.matrix) {
-    case MatrixName::Modelview:
-      return b.index == 0 ? "gl_ModelViewMatrix" : "";
-    case MatrixName::Projection:
-      return "gl_ProjectionMatrix";
-    case MatrixName::Mvp:
-      return "gl_ModelViewProjectionMatrix";
-    case MatrixName::Texture:
-      return "gl_TextureMatrix";
-    case MatrixName::Palette:
-    case MatrixName::Program:
-      return "";
-  }
-  return "";
+  if (b.matrix == MatrixName::Modelview && b.index != 0) return "";  // vertex blending
+  return std::string(glstate::GetStateMatrixInfo(b.matrix).glsl);
 }
 
 std::string_view ModifierSuffix(MatrixModifier m) {
@@ -109,9 +97,7 @@ Expr MatrixRow(Context& ctx, const Binding& b) {
   bool inverse = b.modifier == MatrixModifier::Inverse || b.modifier == MatrixModifier::InvTrans;
   bool transposed =
       b.modifier == MatrixModifier::Transpose || b.modifier == MatrixModifier::InvTrans;
-  std::string_view kind = b.matrix == MatrixName::Modelview ? "modelview"
-                          : b.matrix == MatrixName::Palette ? "palette"
-                                                            : "program";
+  std::string_view kind = glstate::GetStateMatrixInfo(b.matrix).word;
   std::string name = fmt::format("arb_matrix_{}{}{}", kind, b.index, inverse ? "_inverse" : "");
   Binding whole = b;
   whole.modifier = inverse ? MatrixModifier::Inverse : MatrixModifier::None;
@@ -123,79 +109,54 @@ Expr MatrixRow(Context& ctx, const Binding& b) {
           true};
 }
 
-Expr ReadState(Context& ctx, const Binding& b) {
-  const int n = b.index;
-  auto light = [&](const char* field) { return fmt::format("gl_LightSource[{}].{}", n, field); };
-  auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
-  std::string material = Face(b, "gl_FrontMaterial", "gl_BackMaterial");
-  switch (b.state) {
-    case StateItem::MaterialAmbient:
-      return e(material + ".ambient");
-    case StateItem::MaterialDiffuse:
-      return e(material + ".diffuse");
-    case StateItem::MaterialSpecular:
-      return e(material + ".specular");
-    case StateItem::MaterialEmission:
-      return e(material + ".emission");
-    case StateItem::MaterialShininess:  // (s, 0, 0, 1)
-      return Fields(material + ".shininess", "0.0", "0.0", "1.0");
-    case StateItem::LightAmbient:
-      return e(light("ambient"));
-    case StateItem::LightDiffuse:
-      return e(light("diffuse"));
-    case StateItem::LightSpecular:
-      return e(light("specular"));
-    case StateItem::LightPosition:
-      return e(light("position"));
-    case StateItem::LightAttenuation:  // (constant, linear, quadratic, spot exponent)
-      return Fields(light("constantAttenuation"), light("linearAttenuation"),
-                    light("quadraticAttenuation"), light("spotExponent"));
-    case StateItem::LightSpotDirection:  // (direction, cos(cutoff))
-      return Vec3W(light("spotDirection"), light("spotCosCutoff"));
-    case StateItem::LightHalf:  // (|| normalize(P) + (0, 0, 1) ||, 1): see arb_half
-      ctx.helpers.insert(Helper::Half);
-      return e(fmt::format("arb_half({})", light("position")));
-    case StateItem::LightModelAmbient:
-      return e("gl_LightModel.ambient");
-    case StateItem::LightModelSceneColor:  // (a_cs * a_cm + e_cm, diffuse alpha)
-      return Vec3W(
-          Face(b, "gl_FrontLightModelProduct", "gl_BackLightModelProduct") + ".sceneColor.rgb",
-          material + ".diffuse.a");
-    case StateItem::LightProdAmbient:
-    case StateItem::LightProdDiffuse:
-    case StateItem::LightProdSpecular: {  // (light colour * material colour, material alpha)
-      const char* field = b.state == StateItem::LightProdAmbient   ? "ambient"
-                          : b.state == StateItem::LightProdDiffuse ? "diffuse"
-                                                                   : "specular";
-      return Vec3W(fmt::format("{}[{}].{}.rgb",
-                               Face(b, "gl_FrontLightProduct", "gl_BackLightProduct"), n, field),
-                   fmt::format("{}.{}.a", material, field));
+// The text of a state item's GLSL pattern (state_items.def) for binding b.
+std::string StatePattern(std::string_view pattern, const Binding& b) {
+  std::string out;
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '$' || i + 1 == pattern.size()) {
+      out.push_back(pattern[i]);
+      continue;
     }
-    case StateItem::TexGenEye:
-    case StateItem::TexGenObject:
-      return e(fmt::format("gl_{}Plane{}[{}]", b.state == StateItem::TexGenEye ? "Eye" : "Object",
-                           "STRQ"[b.coord & 3], n));
-    case StateItem::FogColor:
-      return e("gl_Fog.color");
-    case StateItem::FogParams:  // (density, start, end, 1 / (end - start))
-      return Fields("gl_Fog.density", "gl_Fog.start", "gl_Fog.end", "gl_Fog.scale");
-    case StateItem::ClipPlane:
-      if (n >= kGlslClipPlanes) return StateUniformVec4(ctx, b, fmt::format("arb_clip_plane{}", n));
-      return e(fmt::format("gl_ClipPlane[{}]", n));
-    case StateItem::PointSize:  // (size, min, max, fade threshold)
-      return Fields("gl_Point.size", "gl_Point.sizeMin", "gl_Point.sizeMax",
-                    "gl_Point.fadeThresholdSize");
-    case StateItem::PointAttenuation:  // (constant, linear, quadratic, 1)
-      return Fields("gl_Point.distanceConstantAttenuation", "gl_Point.distanceLinearAttenuation",
-                    "gl_Point.distanceQuadraticAttenuation", "1.0");
-    case StateItem::TexEnvColor:
-      return e(fmt::format("gl_TextureEnvColor[{}]", n));
-    case StateItem::DepthRange:  // (near, far, far - near, 1)
-      return Fields("gl_DepthRange.near", "gl_DepthRange.far", "gl_DepthRange.diff", "1.0");
-    case StateItem::MatrixRow:
-      return MatrixRow(ctx, b);
+    switch (pattern[++i]) {
+      case 'm':
+        out += Face(b, "gl_FrontMaterial", "gl_BackMaterial");
+        break;
+      case 'F':
+        out += Face(b, "Front", "Back");
+        break;
+      case 'l':
+        out += fmt::format("gl_LightSource[{}]", b.index);
+        break;
+      case 'n':
+        out += fmt::format("{}", b.index);
+        break;
+      case 'C':
+        out.push_back("STRQ"[b.coord & 3]);
+        break;
+    }
   }
-  return e("vec4(0.0)");
+  return out;
+}
+
+// A state binding in GLSL 1.10 built-ins, from its row of state_items.def: one vec4, or its
+// parts ("xyz|w", "x|y|z|w") so that reading a component stays short.
+Expr ReadState(Context& ctx, const Binding& b) {
+  if (b.state == StateItem::MatrixRow) return MatrixRow(ctx, b);
+  if (b.state == StateItem::ClipPlane && b.index >= kGlslClipPlanes) {
+    return StateUniformVec4(ctx, b, fmt::format("arb_clip_plane{}", b.index));
+  }
+  if (b.state == StateItem::LightHalf) ctx.helpers.insert(Helper::Half);
+  const std::string text = StatePattern(glstate::GetStateItemInfo(b.state).glsl, b);
+  std::vector<std::string> parts;
+  for (size_t begin = 0;;) {
+    const size_t bar = text.find('|', begin);
+    parts.push_back(text.substr(begin, bar - begin));
+    if (bar == std::string::npos) break;
+    begin = bar + 1;
+  }
+  if (parts.size() == 4) return Fields(parts[0], parts[1], parts[2], parts[3]);
+  if (parts.size() == 2) return Vec3W(parts[0], parts[1]);
+  return {text, 4, true};
 }
 
 Expr ReadVertexAttrib(Context& ctx, const Binding& b) {

@@ -21,7 +21,7 @@ enum class StateItem : uint8_t {
 };
 
 enum class MatrixName : uint8_t {
-#define ARBITER_STATE_MATRIX(Name, word, index, spelling, glsl) Name,
+#define ARBITER_STATE_MATRIX(Name, word, index, noun, spelling, glsl) Name,
 #include "arbiter/glstate/state_items.def"
 };
 
@@ -60,6 +60,7 @@ struct StateMatrixInfo {
   MatrixName matrix;
   std::string_view word;
   MatrixIndex index;
+  std::string_view noun;      // what the number counts ("palette matrix")
   std::string_view spelling;  // "modelview[{i}]"
   std::string_view glsl;      // the GLSL 1.10 built-in, "" if none
 };
@@ -83,8 +84,8 @@ inline constexpr StateItemInfo kStateItems[] = {
 };
 
 inline constexpr StateMatrixInfo kStateMatrices[] = {
-#define ARBITER_STATE_MATRIX(Name, word, index, spelling, glsl) \
-  {MatrixName::Name, word, MatrixIndex::index, spelling, glsl},
+#define ARBITER_STATE_MATRIX(Name, word, index, noun, spelling, glsl) \
+  {MatrixName::Name, word, MatrixIndex::index, noun, spelling, glsl},
 #include "arbiter/glstate/state_items.def"
 };
 
