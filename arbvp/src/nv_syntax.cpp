@@ -46,6 +46,31 @@ bool DecodeOpcodeWord(std::string_view word, OpcodeWord* out) {
   return false;
 }
 
+std::string_view OpcodeModifiers(const OpcodeInfo& info, ProgramKind kind, int level) {
+  if (kind == ProgramKind::Vertex) {
+    return level >= 2 ? info.vp_mods : level == 1 ? (info.vp_mods.empty() ? "" : "C") : "";
+  }
+  return level >= 2   ? info.fp2_mods
+         : level == 1 ? info.fp_mods
+                      : (info.op == Opcode::KIL ? "" : "S");
+}
+
+bool IsNvReservedWord(std::string_view word, const Program& program) {
+  const int level = program.NvLevel();
+  if (level == 0 || word.empty() || word[0] < 'A' || word[0] > 'Z') return false;
+  OpcodeWord w;
+  if (!DecodeOpcodeWord(word, &w) || !program.HasOpcode(w.op)) return false;
+  const bool plain =
+      !w.saturate && !w.signed_saturate && w.cc < 0 && w.precision == Precision::Default;
+  if (program.kind == ProgramKind::Vertex) return plain;
+  const std::string_view mods = OpcodeModifiers(GetOpcodeInfo(w.op), program.kind, level);
+  auto has = [&](char m) { return mods.find(m) != std::string_view::npos; };
+  if ((w.saturate || w.signed_saturate) && !has('S')) return false;
+  if (w.signed_saturate && level < 2) return false;
+  if (w.cc >= 0 && (!has('C') || w.cc == 1)) return false;
+  return w.precision == Precision::Default || has("?RHX"[static_cast<int>(w.precision)]);
+}
+
 bool IsCcRule(std::string_view word) {
   if (word.size() != 2 && !(word.size() == 3 && (word[2] == '0' || word[2] == '1'))) return false;
   for (std::string_view rule : kCcRules) {

@@ -22,6 +22,15 @@ struct OpcodeWord {
 // so. The longest opcode wins: "DDXC" is DDX with C, not DD with X and C.
 bool DecodeOpcodeWord(std::string_view word, OpcodeWord* out);
 
+// The suffix letters table X.5 gives `info` in a program of `kind` at NV level `level` (0: no
+// NV option): S (_SAT, and _SSAT at level 2), C, R, H, X.
+std::string_view OpcodeModifiers(const OpcodeInfo& info, ProgramKind kind, int level);
+
+// The NV options reserve their instruction names: in vertex programs the opcodes
+// (NV_vertex_program2_option and NV_vertex_program3 list them), in fragment programs "all the
+// instruction names (and variants) listed in Table X.5" (NV_fragment_program_option).
+bool IsNvReservedWord(std::string_view word, const Program& program);
+
 // <ccMaskRule>: EQ GE GT LE LT NE TR FL, with a register digit 0 or 1 ("GT1").
 bool IsCcRule(std::string_view word);
 CcRule CcRuleOf(std::string_view two_letters);

@@ -537,7 +537,7 @@ class Parser {
   [[nodiscard]] bool ParseEstablishName(Token* name, bool* fresh) {
     if (!ExpectIdent("a variable name", name)) return false;
     std::string_view word = Text(*name);
-    if (IsReservedWord(word, kind_)) {
+    if (IsReservedWord(word, kind_) || IsNvReservedWord(word, *program_)) {
       return Fail(Diag::SyntaxReservedName, RangeOf(*name),
                   fmt::format("'{}' is a reserved word and cannot name a variable", word));
     }
@@ -1378,14 +1378,7 @@ class Parser {
   [[nodiscard]] bool CheckModifiers(const Token& op_token, const OpcodeInfo& info,
                                     const Instruction& inst) {
     const int level = program_->NvLevel();
-    std::string_view mods;
-    if (vp()) {
-      mods = level >= 2 ? info.vp_mods : level == 1 ? (info.vp_mods.empty() ? "" : "C") : "";
-    } else {
-      mods = level >= 2   ? info.fp2_mods
-             : level == 1 ? info.fp_mods
-                          : (info.op == Opcode::KIL ? "" : "S");
-    }
+    const std::string_view mods = OpcodeModifiers(info, kind_, level);
     auto has = [&](char m) { return mods.find(m) != std::string_view::npos; };
     auto fail = [&](std::string_view what, std::string_view need) {
       return Fail(Diag::SyntaxModifier, RangeOf(op_token),
