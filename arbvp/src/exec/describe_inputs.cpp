@@ -7,6 +7,7 @@
 
 #include "arbiter/arbvp/exec_io.h"
 #include "arbiter/arbvp/generate.h"
+#include "arbiter/glstate/values.h"
 #include "exec/generate_internal.h"
 
 namespace arbiter::arbvp {
@@ -120,11 +121,6 @@ std::string DescribeTexture(const Texture& t) {
   return text;
 }
 
-Vec4 ParamValue(const std::map<int, Vec4>& params, int32_t index) {
-  auto it = params.find(index);
-  return it == params.end() ? Vec4{0.0f, 0.0f, 0.0f, 0.0f} : it->second;
-}
-
 // The parameter and state lines of one program; `prefix` tells a pair's programs apart.
 void DescribeParams(const Program& program, const gen::ReadInputs& read, const ExecInputs& inputs,
                     std::string_view prefix, std::set<std::string>* lines) {
@@ -134,12 +130,12 @@ void DescribeParams(const Program& program, const gen::ReadInputs& read, const E
     std::string name = BindingName(b, program.kind);
     switch (b.kind) {
       case BindingKind::ProgramEnv:
-        lines->insert(
-            fmt::format("{}{} = {}", prefix, name, FormatVec4(ParamValue(params.env, b.index))));
+        lines->insert(fmt::format("{}{} = {}", prefix, name,
+                                  FormatVec4(glstate::ParameterValue(params.env, b.index))));
         break;
       case BindingKind::ProgramLocal:
-        lines->insert(
-            fmt::format("{}{} = {}", prefix, name, FormatVec4(ParamValue(params.local, b.index))));
+        lines->insert(fmt::format("{}{} = {}", prefix, name,
+                                  FormatVec4(glstate::ParameterValue(params.local, b.index))));
         break;
       case BindingKind::State:
         lines->insert(fmt::format("{} = {}", name, FormatVec4(ReadStateBinding(inputs.state, b))));

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "arbiter/arbvp/deviations.h"
+#include "arbiter/glstate/values.h"
 #include "exec/machine.h"
 #include "exec/nv_flow.h"
 #include "exec/ops.h"
@@ -179,11 +180,6 @@ float DerivedStateError(const GlState& state, const Binding& b) {
     }
   }
   return exec::RoundUp(exec::kApprox * largest);
-}
-
-Vec4 ParamValue(const std::map<int, Vec4>& params, int32_t index) {
-  auto it = params.find(index);
-  return it == params.end() ? Vec4{0.0f, 0.0f, 0.0f, 0.0f} : it->second;
 }
 
 double Clamp01(const D1& x) { return x[0] < 0.0 ? 0.0 : (x[0] > 1.0 ? 1.0 : x[0]); }
@@ -366,9 +362,9 @@ class Run {
       case BindingKind::Constant:
         return exec::DefinedReg(b.value);
       case BindingKind::ProgramEnv:
-        return exec::DefinedReg(ParamValue(Params().env, b.index));
+        return exec::DefinedReg(glstate::ParameterValue(Params().env, b.index));
       case BindingKind::ProgramLocal:
-        return exec::DefinedReg(ParamValue(Params().local, b.index));
+        return exec::DefinedReg(glstate::ParameterValue(Params().local, b.index));
       case BindingKind::State: {
         Vec4 v = ReadStateBinding(inputs_.state, b);
         std::string why = StateBindingUndefined(inputs_.state, b);

@@ -9,95 +9,42 @@
 
 #include <array>
 #include <cstdint>
-#include <glm/mat4x4.hpp>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "arbiter/arbvp/ir.h"
+#include "arbiter/glstate/gl_state.h"
 
 namespace arbiter::arbvp {
 
-using Vec4 = std::array<float, 4>;
+// The GL state model is glstate's (arbiter/glstate/gl_state.h), shared with the host
+// library that feeds a translation's uniforms; the state.* bindings read it through
+// arbiter/glstate/values.h.
+using glstate::GlState;
+using glstate::kMaxClipPlanes;
+using glstate::kMaxLights;
+using glstate::kMaxProgramMatrices;
+using glstate::kMaxProgramParams;
+using glstate::kMaxTextureCoords;
+using glstate::LightState;
+using glstate::MaterialState;
+using glstate::ProgramParameters;
+using glstate::TexGenState;
+using glstate::Vec4;
 
-// ---------------------------------------------------------------------------------------
-// GL state (defaults are GL's initial state, OpenGL 2.0 tables 6.x).
-
-struct MaterialState {
-  Vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
-  Vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-  Vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
-  Vec4 emission{0.0f, 0.0f, 0.0f, 1.0f};
-  float shininess = 0.0f;
-};
-
-struct LightState {
-  Vec4 ambient{0.0f, 0.0f, 0.0f, 1.0f};
-  Vec4 diffuse{0.0f, 0.0f, 0.0f, 1.0f};                    // light 0: (1,1,1,1)
-  Vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};                   // light 0: (1,1,1,1)
-  Vec4 position{0.0f, 0.0f, 1.0f, 0.0f};                   // eye space
-  std::array<float, 3> spot_direction{0.0f, 0.0f, -1.0f};  // eye space
-  float spot_exponent = 0.0f;
-  float spot_cutoff = 180.0f;  // degrees; state.light[n].spot.direction.w is its cosine
-  float constant_attenuation = 1.0f;
-  float linear_attenuation = 0.0f;
-  float quadratic_attenuation = 0.0f;
-};
-
-struct TexGenState {
-  // Per coordinate s, t, r, q. Eye planes as GL stores them (eye space).
-  std::array<Vec4, 4> eye{Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 0, 0}, Vec4{0, 0, 0, 0}};
-  std::array<Vec4, 4> object{Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 0, 0},
-                             Vec4{0, 0, 0, 0}};
-};
-
-// Texture coordinate sets (vertex.texcoord[n], fragment.texcoord[n], result.texcoord[n]) and
-// the legacy texture units of state.matrix.texture[n], state.texgen[n], state.texenv[n]: Mesa's
-// MAX_TEXTURE_COORDS and MAX_TEXTURE_UNITS.
-inline constexpr int kMaxTextureCoords = 8;
-// Texture image units (texture[n] of TEX, TXP, TXB), a separate and larger set: Mesa's
-// fragment MAX_TEXTURE_IMAGE_UNITS_ARB (`arbfp.max_texture_image_units` in
-// compiler/src/limits.def). Real programs sample past the coordinate sets (Unity: 8 to 15).
+// Texture image units (texture[n] of TEX, TXP, TXB), a separate and larger set than the
+// texture coordinate sets (kMaxTextureCoords): Mesa's fragment MAX_TEXTURE_IMAGE_UNITS_ARB
+// (`arbfp.max_texture_image_units` in compiler/src/limits.def). Real programs sample past the
+// coordinate sets (Unity: 8 to 15).
 inline constexpr int kMaxTextureImageUnits = 32;
-inline constexpr int kMaxLights = 8;
-inline constexpr int kMaxClipPlanes = 6;
-inline constexpr int kMaxProgramMatrices = 8;  // state.matrix.program[n]
 inline constexpr int kMaxGenericAttribs = 16;
-// env and local indices accepted by the model: Mesa's MAX_PROGRAM_ENV_PARAMETERS (the specs'
-// minimum is 96 for vertex programs, 24 for fragment programs).
-inline constexpr int kMaxProgramParams = 256;
 
-struct GlState {
-  // Matrices as GL holds them (glm is column-major like GL). ARB reads their rows.
-  glm::mat4 modelview{1.0f};
-  glm::mat4 projection{1.0f};
-  std::array<glm::mat4, kMaxTextureCoords> texture{};  // identity after construction
-  std::array<glm::mat4, kMaxProgramMatrices> program{};
-  std::array<MaterialState, 2> material{};  // front, back
-  std::array<LightState, kMaxLights> light{};
-  Vec4 light_model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
-  std::array<TexGenState, kMaxTextureCoords> texgen{};
-  Vec4 fog_color{0.0f, 0.0f, 0.0f, 0.0f};
-  float fog_density = 1.0f;
-  float fog_start = 0.0f;
-  float fog_end = 1.0f;
-  std::array<Vec4, kMaxClipPlanes> clip_plane{};  // eye space; (0,0,0,0) initially
-  float point_size = 1.0f;
-  float point_size_min = 0.0f;
-  float point_size_max = 1.0f;  // GL's initial value is implementation-dependent; fixed here
-  float point_fade_threshold = 1.0f;
-  std::array<float, 3> point_attenuation{1.0f, 0.0f, 0.0f};
-  std::array<Vec4, kMaxTextureCoords> texenv_color{};  // (0,0,0,0) initially
-  float depth_near = 0.0f;
-  float depth_far = 1.0f;
-
-  GlState();  // sets the identity matrices and light 0's white diffuse and specular
-};
-
-// The value a state.* binding (kind State) reads from `state`: derived items (half vectors,
-// light products, scene colours, the mvp, inverses and transposes computed with GLM) as the
-// specs define them (ARBvp 2.14.3.x tables, ARBfp 3.11.3.x).
+// The value a state.* binding (kind State) reads from `state`: glstate::StateValue, the
+// derived items (half vectors, light products, scene colours, the mvp, inverses and
+// transposes computed with GLM) as the specs define them (ARBvp 2.14.3.x tables, ARBfp
+// 3.11.3.x).
 Vec4 ReadStateBinding(const GlState& state, const Binding& binding);
 
 // ---------------------------------------------------------------------------------------
@@ -211,13 +158,8 @@ inline std::array<float, 2> FragmentCoordXY(size_t index, size_t count,
   return {static_cast<float>(p.x) + offset, static_cast<float>(row) + offset};
 }
 
-// Everything one run reads. program.env is per target; program.local per program. Indices
-// not in the maps read (0,0,0,0), GL's initial value.
-struct ProgramParameters {
-  std::map<int, Vec4> env;
-  std::map<int, Vec4> local;
-};
-
+// Everything one run reads. program.env is per target; program.local per program
+// (ProgramParameters: indices not in the maps read (0,0,0,0), GL's initial value).
 struct ExecInputs {
   GlState state;
   ProgramParameters vertex_params;
