@@ -14,7 +14,7 @@ import re
 import sys
 
 root = pathlib.Path(sys.argv[1])
-LIBS = ("compiler", "arbvp", "glsl", "targets", "runtime")
+LIBS = ("compiler", "glstate", "arbvp", "glsl", "targets", "runtime")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 public = {p.relative_to(root / lib / "include").as_posix()
           for lib in LIBS for p in (root / lib / "include").rglob("*") if p.is_file()}
