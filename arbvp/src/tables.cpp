@@ -165,7 +165,7 @@ struct TexTargetInfo {
   bool shadow;
 };
 constexpr TexTargetInfo kTexTargets[] = {
-#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, spec) {spelling, coords, shadow},
+#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, ...) {spelling, coords, shadow},
 #include "arbiter/arbvp/texture_targets.def"
 #undef ARBVP_TEX_TARGET
 };

@@ -20,9 +20,7 @@ void CheckTextures(const CheckContext& ctx) {
                     fmt::format("texture image unit {}", inst.tex_unit))) {
       continue;
     }
-    bool shadow = inst.target == TexTarget::Shadow1D || inst.target == TexTarget::Shadow2D ||
-                  inst.target == TexTarget::ShadowRect;
-    if (shadow && !shadow_option) {
+    if (TexTargetIsShadow(inst.target) && !shadow_option) {
       ctx.Report(Diag::TextureShadowOption, inst.target_range,
                  fmt::format("texture target '{}' needs OPTION ARB_fragment_program_shadow",
                              TexTargetName(inst.target)));

@@ -229,25 +229,13 @@ std::string FragColorName(const Context& ctx, int index) {
 std::string SamplerName(int unit) { return fmt::format("arb_texture{}", unit); }
 
 std::string SamplerType(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-      return "sampler1D";
-    case TexTarget::Tex2D:
-      return "sampler2D";
-    case TexTarget::Tex3D:
-      return "sampler3D";
-    case TexTarget::Cube:
-      return "samplerCube";
-    case TexTarget::Rect:
-      return "sampler2DRect";
-    case TexTarget::Shadow1D:
-      return "sampler1DShadow";
-    case TexTarget::Shadow2D:
-      return "sampler2DShadow";
-    case TexTarget::ShadowRect:
-      return "sampler2DRectShadow";
-  }
-  return "sampler2D";
+  static constexpr std::string_view kTypes[] = {
+#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, dim, grad, mipmaps, depth, sampler, ...) \
+  sampler,
+#include "arbiter/arbvp/texture_targets.def"
+#undef ARBVP_TEX_TARGET
+  };
+  return std::string(kTypes[static_cast<size_t>(target)]);
 }
 
 Expr ReadBinding(Context& ctx, const Binding& b) {

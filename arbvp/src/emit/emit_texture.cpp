@@ -11,25 +11,28 @@
 namespace arbiter::arbvp::emit {
 namespace {
 
-// One row per TexTarget (texture_targets.def order): the GLSL function's base name, the
-// coordinate components it reads (shadow targets: the depth reference in r, as
-// ARB_fragment_program_shadow puts it), the components of its derivatives, and whether it
-// has a Lod form (rectangle textures have no mipmaps and GLSL no Lod function for them).
+// What the translation needs of a target (texture_targets.def): the GLSL function's base
+// name, the coordinate components it reads (x.. up to the last one the target reads: a
+// shadow target's depth reference is in r, as ARB_fragment_program_shadow puts it), the
+// components of its derivatives, whether it has Lod and bias forms (rectangle textures have
+// no mipmaps and GLSL no Lod function for them), and whether it has a Proj form.
 struct TargetRow {
   const char* function;
   int coords;  // components x.. of the coordinate
   int grad;    // components x.. of a derivative
   bool lod;
+  bool proj;
 };
+
+// The components x.. up to the highest one in `mask`.
+constexpr int Width(unsigned mask) { return mask == 0 ? 0 : 1 + Width(mask >> 1); }
+
 constexpr TargetRow kTargets[] = {
-    {"texture1D", 1, 1, true},       // 1D
-    {"texture2D", 2, 2, true},       // 2D
-    {"texture3D", 3, 3, true},       // 3D
-    {"textureCube", 3, 3, true},     // CUBE
-    {"texture2DRect", 2, 2, false},  // RECT
-    {"shadow1D", 3, 1, true},        // SHADOW1D
-    {"shadow2D", 3, 2, true},        // SHADOW2D
-    {"shadow2DRect", 3, 2, false},   // SHADOWRECT
+#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, dim, grad, mipmaps, depth, sampler, \
+                         lookup, proj, spec)                                                 \
+  {lookup, Width(coords), grad, mipmaps, proj},
+#include "arbiter/arbvp/texture_targets.def"
+#undef ARBVP_TEX_TARGET
 };
 
 const TargetRow& Row(TexTarget target) { return kTargets[static_cast<size_t>(target)]; }
@@ -79,10 +82,11 @@ std::string Sample(Context& ctx, const Instruction& inst, SampleKind kind) {
   const std::string suffix = lod.empty() || !row.lod ? "" : "Lod";
   const std::string lod_arg = lod.empty() || !row.lod ? "" : ", " + lod;
   std::string text;
-  if (kind == SampleKind::Projective && inst.target == TexTarget::Cube) {
+  if (kind == SampleKind::Projective && !row.proj) {
     // GLSL has no textureCubeProj: divide s, t, r by q ourselves.
     text = fmt::format("{}{}({}, {} / {}{})", f, suffix, sampler,
-                       Source(ctx, coord, {0, 1, 2}).text, Source(ctx, coord, {3}).text, lod_arg);
+                       Source(ctx, coord, First(row.coords)).text, Source(ctx, coord, {3}).text,
+                       lod_arg);
   } else if (kind == SampleKind::Projective) {
     // The ...Proj functions with a vec4 divide the coordinates (and r) by q.
     text = fmt::format("{}Proj{}({}, {}{})", f, suffix, sampler,

@@ -650,23 +650,10 @@ Reg OpXPD(OpContext& c) {
 // ---- texture instructions ------------------------------------------------------------------
 
 // The coordinate components a target reads: s (1D), s t (2D, RECT), s t r (3D, CUBE,
-// SHADOW2D, SHADOWRECT), s r (SHADOW1D).
+// SHADOW2D, SHADOWRECT), s r (SHADOW1D) (texture_targets.def).
 std::array<bool, 3> UsedCoords(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-      return {true, false, false};
-    case TexTarget::Tex2D:
-    case TexTarget::Rect:
-      return {true, true, false};
-    case TexTarget::Shadow1D:
-      return {true, false, true};
-    case TexTarget::Tex3D:
-    case TexTarget::Cube:
-    case TexTarget::Shadow2D:
-    case TexTarget::ShadowRect:
-      return {true, true, true};
-  }
-  return {true, true, true};
+  const uint8_t mask = TexTargetCoordMask(target);
+  return {(mask & 1u) != 0, (mask & 2u) != 0, (mask & 4u) != 0};
 }
 
 // How far a lookup may move each coordinate: its own error, kTexel of a texel and

@@ -246,29 +246,28 @@ std::string_view TexDimName(TexDim dim) {
   return "?";
 }
 
-TexDim TargetDim(TexTarget target) {
-  switch (target) {
-    case TexTarget::Tex1D:
-    case TexTarget::Shadow1D:
-      return TexDim::Tex1D;
-    case TexTarget::Tex2D:
-    case TexTarget::Shadow2D:
-      return TexDim::Tex2D;
-    case TexTarget::Tex3D:
-      return TexDim::Tex3D;
-    case TexTarget::Cube:
-      return TexDim::Cube;
-    case TexTarget::Rect:
-    case TexTarget::ShadowRect:
-      return TexDim::Rect;
-  }
-  return TexDim::Tex2D;
+namespace {
+// What the interpreter needs of a target (texture_targets.def).
+struct TargetRow {
+  TexDim dim;
+  bool depth;
+};
+constexpr TargetRow kTargets[] = {
+#define ARBVP_TEX_TARGET(name, spelling, coords, shadow, dim, grad, mipmaps, depth, ...) \
+  {TexDim::dim, depth},
+#include "arbiter/arbvp/texture_targets.def"
+#undef ARBVP_TEX_TARGET
+};
+const TargetRow& Row(TexTarget target) { return kTargets[static_cast<size_t>(target)]; }
+// A non-shadow target that may sample a depth texture (1D, 2D, RECT).
+bool IsDepthCapableNonShadow(TexTarget target) {
+  return !TexTargetIsShadow(target) && Row(target).depth;
 }
+}  // namespace
 
-bool IsShadowTarget(TexTarget target) {
-  return target == TexTarget::Shadow1D || target == TexTarget::Shadow2D ||
-         target == TexTarget::ShadowRect;
-}
+TexDim TargetDim(TexTarget target) { return Row(target).dim; }
+
+bool IsShadowTarget(TexTarget target) { return TexTargetIsShadow(target); }
 
 }  // namespace arbiter::arbvp
 
@@ -291,8 +290,7 @@ Sample SampleTexture(const std::map<int, Texture>& textures, int unit, TexTarget
                         ? "a SHADOW target samples a depth texture whose compare mode is NONE"
                         : "a SHADOW target samples a texture that is not a depth texture";
   }
-  if (!shadow && shadow_option && tex.depth_texture && tex.compare &&
-      (target == TexTarget::Tex1D || target == TexTarget::Tex2D || target == TexTarget::Rect)) {
+  if (shadow_option && tex.depth_texture && tex.compare && IsDepthCapableNonShadow(target)) {
     out.undefined = "a non-SHADOW target samples a depth texture with depth comparison enabled";
   }
 
