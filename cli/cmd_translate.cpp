@@ -10,6 +10,7 @@
 
 #include "arbiter/arbvp/check.h"
 #include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/emit_mutation.h"
 #include "arbiter/runtime/translate.h"
 #include "cli.h"
 #include "load_arb.h"
@@ -90,7 +91,9 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
   Outcome outcome;
   arbvp::EmitOptions emit;
   emit.comments = !options.no_comments;
-  arbvp::LookupMutation(options.mutation, &emit.mutation);
+  arbvp::Mutation mutation = arbvp::Mutation::None;
+  arbvp::LookupMutation(options.mutation, &mutation);  // RunTranslate checked the name
+  emit = arbvp::WithMutation(emit, mutation);
   runtime::CheckedTranslation t =
       runtime::TranslateChecked(job.vertex ? job.vertex->checked.program.get() : nullptr,
                                 job.fragment ? job.fragment->checked.program.get() : nullptr, emit,

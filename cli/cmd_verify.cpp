@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "arbiter/arbvp/deviations.h"
+#include "arbiter/arbvp/emit_mutation.h"
 #include "arbiter/arbvp/exec_io.h"
 #include "arbiter/runtime/mesa.h"
 #include "arbiter/runtime/verify.h"
@@ -189,10 +190,12 @@ int RunVerify(const VerifyCommandOptions& options) {
                "and at least one of mesa-arb, mesa-glsl\n");
     return static_cast<int>(Exit::Usage);
   }
-  if (!arbvp::LookupMutation(options.mutation, &verify.emit.mutation)) {
+  arbvp::Mutation mutation = arbvp::Mutation::None;
+  if (!arbvp::LookupMutation(options.mutation, &mutation)) {
     fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
     return static_cast<int>(Exit::Usage);
   }
+  verify.emit = arbvp::WithMutation(verify.emit, mutation);
 
   std::vector<LoadedArb> loaded;
   std::vector<compiler::FileReport> reports;

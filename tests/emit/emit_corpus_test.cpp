@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "arbiter/arbvp/emit_mutation.h"
 #include "emit_fixture.h"
 
 namespace arbiter::arbvp::testing {
@@ -61,8 +62,7 @@ TEST(EmitMutations, EachChangesSomeCorpusTranslation) {
   std::vector<Mutation> all = AllMutations();
   EXPECT_GE(all.size(), 20u);
   for (Mutation m : all) {
-    EmitOptions options;
-    options.mutation = m;
+    const EmitOptions options = WithMutation(EmitOptions{}, m);
     int changed = 0;
     for (const Item& item : items) {
       Translation t = EmitGlsl(*item.checked.program, options, item.checked.source.get());

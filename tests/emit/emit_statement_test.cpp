@@ -3,6 +3,7 @@
 // addressing, KIL and NaN, masks, scalar replication.
 #include <gtest/gtest.h>
 
+#include "arbiter/arbvp/emit_mutation.h"
 #include "emit_fixture.h"
 
 namespace arbiter::arbvp::testing {
@@ -156,18 +157,17 @@ TEST(EmitStatement, ArlFloorsAndSaturateClamps) {
 }
 
 TEST(EmitStatement, MutationsChangeTheirStatement) {
-  EmitOptions o;
-  o.mutation = Mutation::RsqNoAbs;
-  EXPECT_EQ(Vp("TEMP t;\nRSQ t, t.x;\n", o), Lines{"t = vec4(inversesqrt(t.x));"});
-  o.mutation = Mutation::LrpOperandOrder;
-  EXPECT_EQ(Fp("TEMP a, b, c, d;\nLRP d, a, b, c;\n", o), Lines{"d = mix(b, c, a);"});
-  o.mutation = Mutation::ArlTruncate;
-  EXPECT_EQ(Vp("ADDRESS a;\nARL a.x, vertex.color.w;\n", o), Lines{"a = int(gl_Color.w);"});
-  o.mutation = Mutation::KilOnNaN;
-  EXPECT_EQ(Fp("TEMP a;\nKIL a;\n", o),
+  auto with = [](Mutation m) { return WithMutation(EmitOptions{}, m); };
+  EXPECT_EQ(Vp("TEMP t;\nRSQ t, t.x;\n", with(Mutation::RsqNoAbs)),
+            Lines{"t = vec4(inversesqrt(t.x));"});
+  EXPECT_EQ(Fp("TEMP a, b, c, d;\nLRP d, a, b, c;\n", with(Mutation::LrpOperandOrder)),
+            Lines{"d = mix(b, c, a);"});
+  EXPECT_EQ(Vp("ADDRESS a;\nARL a.x, vertex.color.w;\n", with(Mutation::ArlTruncate)),
+            Lines{"a = int(gl_Color.w);"});
+  EXPECT_EQ(Fp("TEMP a;\nKIL a;\n", with(Mutation::KilOnNaN)),
             Lines{"if (!all(greaterThanEqual(a, vec4(0.0)))) discard;"});
-  o.mutation = Mutation::WriteMaskIgnored;
-  EXPECT_EQ(Vp("TEMP a;\nMOV a.x, vertex.color;\n", o), Lines{"a = gl_Color;"});
+  EXPECT_EQ(Vp("TEMP a;\nMOV a.x, vertex.color;\n", with(Mutation::WriteMaskIgnored)),
+            Lines{"a = gl_Color;"});
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "arbiter/arbvp/check.h"
+#include "arbiter/arbvp/emit_mutation.h"
 #include "arbiter/arbvp/interpret.h"
 #include "arbiter/runtime/exec.h"
 #include "test_executor.h"
@@ -78,8 +79,7 @@ class ExecGlslTest : public ::testing::Test {
     std::vector<arbvp::VectorResult> glsl;
     std::string error;
     EXPECT_TRUE(executor_->Run({v.get(), f.get()}, in, &arb, &error)) << error;
-    arbvp::EmitOptions emit;
-    emit.mutation = mutation;
+    const arbvp::EmitOptions emit = arbvp::WithMutation(arbvp::EmitOptions{}, mutation);
     EXPECT_TRUE(executor_->RunTranslated({v.get(), f.get()}, emit, in, &glsl, &error)) << error;
     const std::vector<arbvp::VectorResult> ref = v != nullptr && f != nullptr
                                                      ? arbvp::InterpretPair(*v, *f, in)
@@ -391,8 +391,7 @@ TEST_F(ExecGlslTest, TranslationOfEveryMutationRuns) {
       "LIT result.color[0], t;\nRSQ result.color[1], t.x;\nKIL t;\n"
       "SWZ result.color[2], t, -x, 0, 1, w;\nEND\n");
   for (arbvp::Mutation m : arbvp::AllMutations()) {
-    arbvp::EmitOptions emit;
-    emit.mutation = m;
+    const arbvp::EmitOptions emit = arbvp::WithMutation(arbvp::EmitOptions{}, m);
     std::vector<arbvp::VectorResult> results;
     std::string error;
     EXPECT_TRUE(executor_->RunTranslated({nullptr, f.get()}, emit, in, &results, &error))

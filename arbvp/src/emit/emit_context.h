@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/emit_mutation.h"
 #include "arbiter/arbvp/ir.h"
 
 namespace arbiter::arbvp::emit {
@@ -55,7 +56,7 @@ struct DestTarget {
 
 struct Context {
   Context(const Program& p, const EmitOptions& o, const compiler::SourceFile* s)
-      : program(p), options(o), source(s), mutation(o.mutation) {}
+      : program(p), options(o), source(s), mutation(MutationOf(o)) {}
 
   const Program& program;
   const EmitOptions& options;

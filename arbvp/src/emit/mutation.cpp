@@ -1,7 +1,8 @@
-// The names of the test-only translator mutations (emit.h).
+// The test-only translator mutations (emit_mutation.h): their names, and the options that
+// carry one.
 #include <array>
 
-#include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/emit_mutation.h"
 
 namespace arbiter::arbvp {
 namespace {
@@ -60,5 +61,12 @@ bool LookupMutation(std::string_view name, Mutation* mutation) {
   }
   return false;
 }
+
+EmitOptions WithMutation(EmitOptions options, Mutation mutation) {
+  options.mutation_ = mutation;
+  return options;
+}
+
+Mutation MutationOf(const EmitOptions& options) { return options.mutation_; }
 
 }  // namespace arbiter::arbvp

@@ -13,53 +13,19 @@
 
 namespace arbiter::arbvp {
 
-// Test-only: injects ONE plausible translator bug into the emitted GLSL, so that a
-// differential verifier can prove it catches it. Never set outside tests.
-enum class Mutation : uint8_t {
-  None,
-  RsqNoAbs,             // RSQ = inversesqrt(x) instead of inversesqrt(abs(x))
-  LrpOperandOrder,      // LRP = mix(b, c, a) instead of mix(c, b, a)
-  MatrixRowsColumns,    // state.matrix rows read as columns
-  LitNoZeroPowZero,     // LIT.z = pow(y, w) without the 0^0 = 1 rule
-  LitExponentClamp180,  // LIT clamps w to +-180 instead of +-(128 - eps)
-  LitNoYClamp,          // LIT does not clamp y at 0
-  SwzSignLost,          // SWZ drops the per-component signs
-  SwzZeroOneSwapped,    // SWZ 0 and 1 selectors exchanged
-  ArlTruncate,          // ARL truncates towards zero instead of flooring
-  SaturateDropped,      // _SAT ignored
-  KilOnNaN,             // KIL kills when !(v >= 0), so NaN kills
-  KilOnlyX,             // KIL tests only the x component
-  FogExpAsExp2,         // ARB_fog_exp uses the exp2 formula
-  FogLinearStartEnd,    // ARB_fog_linear with start and end exchanged
-  CmpLessEqual,         // CMP selects b when a <= 0 instead of a < 0
-  DphNoW,               // DPH ignores b.w
-  DstComponents,        // DST y and z exchanged
-  XpdOperandOrder,      // XPD = cross(b, a)
-  LogNoAbs,             // LOG of x instead of |x|
-  ExpFraction,          // EXP.y = t - trunc(t) instead of t - floor(t)
-  TxpNoDivide,          // TXP samples like TEX (no divide by q)
-  NegationDropped,      // a negated source operand read without its sign
-  WriteMaskIgnored,     // every destination written in full
-  ScsSinCosSwapped,     // SCS = (sin, cos) instead of (cos, sin)
-  PowOperandsSwapped,   // POW = pow(b, a)
-  FrcTruncate,          // FRC = x - trunc(x) instead of x - floor(x)
-  SgeStrict,            // SGE compares with > instead of >=
-  FogColorUnclamped,    // fog options blend the unclamped colour
-  kCount,               // not a mutation: the number of enumerators
-};
-
-// The stable name of a mutation ("rsq-no-abs"); "none" for Mutation::None.
-std::string_view MutationName(Mutation mutation);
-// Every mutation except None, in enum order.
-std::vector<Mutation> AllMutations();
-// Looks a mutation up by name; returns false if unknown.
-bool LookupMutation(std::string_view name, Mutation* mutation);
+// Test-only: the translator mutations (arbiter/arbvp/emit_mutation.h).
+enum class Mutation : uint8_t;
 
 struct EmitOptions {
   // Precede each statement with the ARB instruction it translates, as a `//` comment (the
   // instruction's source text when a SourceFile is given).
   bool comments = true;
-  Mutation mutation = Mutation::None;  // test-only
+
+ private:
+  // Test-only: an injected translator bug, which only emit_mutation.h's WithMutation sets.
+  Mutation mutation_{};  // Mutation::None
+  friend EmitOptions WithMutation(EmitOptions options, Mutation mutation);
+  friend Mutation MutationOf(const EmitOptions& options);
 };
 
 // ---------------------------------------------------------------------------------------
