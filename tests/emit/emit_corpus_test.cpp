@@ -2,6 +2,7 @@
 // every run; every test-only mutation changes the translation of some corpus program.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -45,15 +46,31 @@ std::string TestName(const ::testing::TestParamInfo<std::string>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, EmitCorpusTest, ::testing::ValuesIn(ValidCorpusFiles()), TestName);
 
-// Each mutation must change the emitted text of at least one corpus program (else the
-// differential verifier could never catch it), and the mutated text must still compile.
+// The NV option programs (corpus/arb/valid-nv), as "valid-nv/name".
+std::vector<std::string> NvCorpusFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(CorpusPath("valid-nv")))) {
+    std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file() && (ext == ".vp" || ext == ".fp")) {
+      files.push_back("valid-nv/" + entry.path().filename().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Each mutation must change the emitted text of at least one corpus program, the NV ones
+// included (else the differential verifier could never catch it), and the mutated text must
+// still compile.
 TEST(EmitMutations, EachChangesSomeCorpusTranslation) {
   struct Item {
     Checked checked;
     std::string glsl;
   };
   std::vector<Item> items;
-  for (const std::string& name : ValidCorpusFiles()) {
+  std::vector<std::string> names = ValidCorpusFiles();
+  for (const std::string& name : NvCorpusFiles()) names.push_back(name);
+  for (const std::string& name : names) {
     Item item{CheckText(name, ReadFile(CorpusPath(name))), ""};
     ASSERT_TRUE(item.checked.program) << name;
     item.glsl = EmitGlsl(*item.checked.program, EmitOptions{}, item.checked.source.get()).glsl;

@@ -170,6 +170,29 @@ TEST(EmitStatement, MutationsChangeTheirStatement) {
             Lines{"a = gl_Color;"});
 }
 
+TEST(EmitStatement, NvMutationsChangeTheirStatement) {
+  auto with = [](Mutation m) { return WithMutation(EmitOptions{}, m); };
+  const std::string nv = "OPTION NV_fragment_program2;\nTEMP a, b, c;\n";
+  EXPECT_EQ(Fp(nv + "DIV c, a, b.y;\n"), Lines{"c = a / b.y;"});
+  EXPECT_EQ(Fp(nv + "DIV c, a, b.y;\n", with(Mutation::DivByVector)), Lines{"c = a / b;"});
+  EXPECT_EQ(Fp(nv + "SEQ c, a, b;\n", with(Mutation::SeqSneSwapped)),
+            Lines{"c = vec4(notEqual(a, b));"});
+  EXPECT_EQ(Fp(nv + "SNE c, a, b;\n", with(Mutation::SeqSneSwapped)),
+            Lines{"c = vec4(equal(a, b));"});
+  EXPECT_EQ(Fp(nv + "ADD_SSAT c, a, b;\n", with(Mutation::SsatUnitRange)),
+            Lines{"c = clamp(a + b, 0.0, 1.0);"});
+  const std::string cc = nv + "MOVC c, a;\nMOV c (GT.x), b;\n";
+  EXPECT_EQ(Fp(cc), (Lines{"arb_t = a;", "c = arb_t;", "arb_cc0 = arb_t;", "arb_t = b;",
+                           "if (arb_cc0.x > 0.0) c = arb_t;"}));
+  EXPECT_EQ(Fp(cc, with(Mutation::CcGtAsGe)),
+            (Lines{"arb_t = a;", "c = arb_t;", "arb_cc0 = arb_t;", "arb_t = b;",
+                   "if (arb_cc0.x >= 0.0) c = arb_t;"}));
+  EXPECT_EQ(Fp(cc, with(Mutation::CcUpdateIgnored)),
+            (Lines{"arb_t = a;", "c = arb_t;", "arb_t = b;", "if (arb_cc0.x > 0.0) c = arb_t;"}));
+  EXPECT_EQ(Fp(cc, with(Mutation::CcWriteMaskIgnored)),
+            (Lines{"arb_t = a;", "c = arb_t;", "arb_cc0 = arb_t;", "arb_t = b;", "c = arb_t;"}));
+}
+
 }  // namespace
 }  // namespace arbiter::arbvp::testing
 

@@ -6,9 +6,13 @@
       (undefined components, unstable ones and the documented deviations are reported by
       verify and not counted here).
   verify_corpus.py ARBITER CORPUS mutations [--sanitized]
-      each test-only translator mutation (arbiter's emit.h), injected alone into the GLSL
-      translation, makes verify report a disagreement on at least one corpus program; the
-      0^0 rule of LIT is checked on llvmpipe, the driver whose pow(0, 0) differs from 1.
+      each test-only translator mutation of the ARB instructions (arbiter/arbvp/
+      emit_mutation.h), injected alone into the GLSL translation, makes verify report a
+      disagreement on at least one corpus program; the 0^0 rule of LIT is checked on
+      llvmpipe, the driver whose pow(0, 0) differs from 1.
+  verify_corpus.py ARBITER CORPUS mutations-nv [--sanitized]
+      the same for the mutations of the NV options' constructs, over the NV corpus
+      (corpus/arb/valid-nv: the interpreter against Mesa running the translation).
       --sanitized (the binary runs under ASan/UBSan, where the reference interpreter is ten
       times slower): 64 random vectors per program instead of verify's default, besides
       the edge vectors; every mutation is still caught (measured on this corpus).
@@ -17,8 +21,8 @@ import json
 import subprocess
 import sys
 
-# The mutations of arbvp::Mutation (emit.h), in its order; the test fails if the binary
-# knows one more or one fewer (an unknown name is a usage error).
+# The mutations of arbvp::Mutation (emit_mutation.h), in its order: those of the ARB
+# instructions, then those of the NV options (an unknown name is a usage error).
 MUTATIONS = [
     "rsq-no-abs", "lrp-operand-order", "matrix-rows-columns", "lit-no-zero-pow-zero",
     "lit-exponent-clamp-180", "lit-no-y-clamp", "swz-sign-lost", "swz-zero-one-swapped",
@@ -27,6 +31,11 @@ MUTATIONS = [
     "xpd-operand-order", "log-no-abs", "exp-fraction", "txp-no-divide", "negation-dropped",
     "write-mask-ignored", "scs-sin-cos-swapped", "pow-operands-swapped", "frc-truncate",
     "sge-strict", "fog-color-unclamped",
+]
+NV_MUTATIONS = [
+    "cc-update-ignored", "cc-gt-as-ge", "cc-write-mask-ignored", "fp16-rounding-dropped",
+    "fx12-clamp-dropped", "ssat-unit-range", "ssg-zero-positive", "div-by-vector",
+    "brk-ignored", "rep-count-plus-one", "rfl-no-double", "seq-sne-swapped",
 ]
 DRIVER = {"lit-no-zero-pow-zero": "llvmpipe"}
 
@@ -50,8 +59,7 @@ def agree(arbiter, corpus, driver):
     return 1 if bad or rc != 0 or not report["programs"] else 0
 
 
-def mutations(arbiter, corpus, extra):
-    names = MUTATIONS
+def mutations(arbiter, corpus, names, extra):
     missed = []
     for m in names:
         driver = DRIVER.get(m, "softpipe")
@@ -71,9 +79,10 @@ def main():
     arbiter, corpus, mode = sys.argv[1:4]
     if mode == "agree":
         return agree(arbiter, corpus, sys.argv[4])
-    if mode == "mutations":
+    if mode in ("mutations", "mutations-nv"):
         extra = ["--vectors", "64"] if "--sanitized" in sys.argv[4:] else []
-        return mutations(arbiter, corpus, extra)
+        return mutations(arbiter, corpus, MUTATIONS if mode == "mutations" else NV_MUTATIONS,
+                         extra)
     sys.exit(f"unknown mode {mode}")
 
 

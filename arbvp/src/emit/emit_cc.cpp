@@ -29,7 +29,10 @@ constexpr RuleRow kRules[] = {
     {nullptr, nullptr},          // FL
 };
 
-const RuleRow& Rule(CcRule rule) { return kRules[static_cast<size_t>(rule)]; }
+const RuleRow& Rule(const Context& ctx, CcRule rule) {
+  if (rule == CcRule::GT && ctx.Mutated(Mutation::CcGtAsGe)) rule = CcRule::GE;
+  return kRules[static_cast<size_t>(rule)];
+}
 
 char Letter(Swz s) { return "xyzw01"[static_cast<int>(s)]; }
 
@@ -61,7 +64,7 @@ std::string CcComponentTest(Context& ctx, const CcTest& cc, int comp) {
   if (!cc.present || cc.rule == CcRule::TR) return "true";
   if (cc.rule == CcRule::FL) return "false";
   return fmt::format("{}.{} {} 0.0", CcName(ctx, cc.reg),
-                     Letter(cc.swizzle[static_cast<size_t>(comp)]), Rule(cc.rule).op);
+                     Letter(cc.swizzle[static_cast<size_t>(comp)]), Rule(ctx, cc.rule).op);
 }
 
 std::string CcAnyTest(Context& ctx, const CcTest& cc) {
@@ -69,8 +72,8 @@ std::string CcAnyTest(Context& ctx, const CcTest& cc) {
   if (cc.rule == CcRule::FL) return "false";
   std::string letters = DistinctLetters(cc);
   std::string name = CcName(ctx, cc.reg);
-  if (letters.size() == 1) return fmt::format("{}.{} {} 0.0", name, letters, Rule(cc.rule).op);
-  return fmt::format("any({}({}{}, {}(0.0)))", Rule(cc.rule).function, name,
+  if (letters.size() == 1) return fmt::format("{}.{} {} 0.0", name, letters, Rule(ctx, cc.rule).op);
+  return fmt::format("any({}({}{}, {}(0.0)))", Rule(ctx, cc.rule).function, name,
                      letters == "xyzw" ? "" : "." + letters,
                      VecType(static_cast<int>(letters.size())));
 }
@@ -95,8 +98,11 @@ std::string CcWrite(Context& ctx, const Instruction& inst, const Comps& comps, c
   const std::string letters = Letters(comps);
   const bool all = comps == AllComps();
   std::string out = fmt::format("{}{} = {};\n", t, all ? "" : "." + letters, result.text);
-  const bool masked = test.present && test.rule != CcRule::TR;
-  std::string cc = inst.cc_update >= 0 ? CcName(ctx, inst.cc_update) : "";
+  const bool masked =
+      test.present && test.rule != CcRule::TR && !ctx.Mutated(Mutation::CcWriteMaskIgnored);
+  std::string cc = inst.cc_update >= 0 && !ctx.Mutated(Mutation::CcUpdateIgnored)
+                       ? CcName(ctx, inst.cc_update)
+                       : "";
   // A C suffix on the register the test reads would change codes later components test.
   bool tests_first = masked && inst.cc_update == test.reg && comps.size() > 1;
   bool one_test = true;
@@ -107,7 +113,7 @@ std::string CcWrite(Context& ctx, const Instruction& inst, const Comps& comps, c
     DeclareLocal(ctx, "arb_m", "bvec4 arb_m = bvec4(false);  // a condition code test");
     std::string swz;
     for (Swz s : test.swizzle) swz += Letter(s);
-    out += fmt::format("arb_m = {}({}.{}, vec4(0.0));\n", Rule(test.rule).function,
+    out += fmt::format("arb_m = {}({}.{}, vec4(0.0));\n", Rule(ctx, test.rule).function,
                        CcName(ctx, test.reg), swz);
   }
   auto cc_value = [&](const std::string& part, int width) {

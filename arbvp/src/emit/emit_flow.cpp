@@ -185,11 +185,12 @@ std::string StoreAt(const std::string& array, const std::string& index, const st
 
 // The loop count of LOOP and REP: floor(x), "limited to MAX_PROGRAM_LOOP_COUNT_NV".
 std::string LoopCount(Context& ctx, const Instruction& inst) {
+  const bool plus_one = inst.op == Opcode::REP && ctx.Mutated(Mutation::RepCountPlusOne);
   if (float v = 0.0f; ConstantFloor(ctx.program, inst, 0, &v)) {
-    return fmt::format("{}", MaxPasses(ctx.program, inst));
+    return fmt::format("{}", MaxPasses(ctx.program, inst) + (plus_one ? 1 : 0));
   }
-  return fmt::format("int(clamp(floor({}), 0.0, {}.0))", Source(ctx, Src(inst, 0), {0}).text,
-                     kMaxLoopCount);
+  return fmt::format("int(clamp(floor({}), 0.0, {}.0)){}", Source(ctx, Src(inst, 0), {0}).text,
+                     kMaxLoopCount, plus_one ? " + 1" : "");
 }
 
 // LOOP's initial index (comp 1) or increment (comp 2): floor(y), floor(z).
@@ -295,6 +296,9 @@ std::string BRA(Context& ctx, const Instruction& inst) {
 
 // BRK: to the instruction after the loop's ENDLOOP or ENDREP.
 std::string BRK(Context& ctx, const Instruction& inst) {
+  if (ctx.Mutated(Mutation::BrkIgnored)) {
+    return Machine(ctx) ? fmt::format("arb_pc = {};\n", ctx.pc + 1) : "// (BRK ignored)\n";
+  }
   std::string test = CcAnyTest(ctx, inst.cond);
   if (!Machine(ctx)) return test == "true" ? "break;\n" : fmt::format("if ({}) break;\n", test);
   const bool loop = ctx.program.instructions[static_cast<size_t>(inst.jump)].op == Opcode::ENDLOOP;

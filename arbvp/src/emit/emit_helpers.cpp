@@ -113,14 +113,19 @@ std::string Fp16Text() {
          VectorForms("vec", "arb_fp16");
 }
 
-std::string Fx12Text() {
-  return "// fx12 (NV_fragment_program 3.11.4.2): s1.10 fixed point. Values below -2048/1024 and\n"
-         "// above +2047/1024 (infinities too) become those, NaN becomes 0, and the rest the\n"
-         "// nearest multiple of 1/1024, a tie to the even one.\n"
-         "float arb_fx12(float x) {\n"
-         "  if (x != x) return 0.0;\n"
-         "  if (x < -2.0) return -2.0;\n"
-         "  if (x > 1.9990234375) return 1.9990234375;\n"
+std::string Fx12Text(bool clamp) {
+  std::string out =
+      "// fx12 (NV_fragment_program 3.11.4.2): s1.10 fixed point. Values below -2048/1024 and\n"
+      "// above +2047/1024 (infinities too) become those, NaN becomes 0, and the rest the\n"
+      "// nearest multiple of 1/1024, a tie to the even one.\n"
+      "float arb_fx12(float x) {\n"
+      "  if (x != x) return 0.0;\n";
+  if (clamp) {
+    out +=
+        "  if (x < -2.0) return -2.0;\n"
+        "  if (x > 1.9990234375) return 1.9990234375;\n";
+  }
+  return out +
          "  return arb_round_even(x * 1024.0) * 0.0009765625;\n"
          "}\n" +
          VectorForms("vec", "arb_fx12");
@@ -159,18 +164,25 @@ std::string RccText() {
 
 // NaN is tested first, with x != x (GLSL's isnan idiom, which compilers keep): Mesa rewrites
 // -|a| < 0 into a != 0, which NaN passes.
-const char* kSsgText =
-    "// SSG (NV_vertex_program2_option 2.14.5.41): 1, 0 or -1 as x is above, at or below 0;\n"
-    "// NaN stays NaN (GLSL's sign() leaves it undefined).\n"
-    "float arb_ssg(float x) { return x != x ? x : (x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0)); }\n";
+std::string SsgText(const Context& ctx) {
+  return fmt::format(
+      "// SSG (NV_vertex_program2_option 2.14.5.41): 1, 0 or -1 as x is above, at or below 0;\n"
+      "// NaN stays NaN (GLSL's sign() leaves it undefined).\n"
+      "float arb_ssg(float x) {{ return x != x ? x : (x {} 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0)); "
+      "}}\n",
+      ctx.Mutated(Mutation::SsgZeroPositive) ? ">=" : ">");
+}
 
-const char* kRflText =
-    "// RFL (NV_fragment_program_option 3.11.5.36): the reflection of d about the axis a,\n"
-    "// 2 (a . d) / (a . a) * a - d, in the specification's order of operations.\n"
-    "vec3 arb_rfl(vec3 a, vec3 d) {\n"
-    "  float k = 2.0 * dot(a, d) / dot(a, a);\n"
-    "  return k * a - d;\n"
-    "}\n";
+std::string RflText(const Context& ctx) {
+  return fmt::format(
+      "// RFL (NV_fragment_program_option 3.11.5.36): the reflection of d about the axis a,\n"
+      "// 2 (a . d) / (a . a) * a - d, in the specification's order of operations.\n"
+      "vec3 arb_rfl(vec3 a, vec3 d) {{\n"
+      "  float k = {}dot(a, d) / dot(a, a);\n"
+      "  return k * a - d;\n"
+      "}}\n",
+      ctx.Mutated(Mutation::RflNoDouble) ? "" : "2.0 * ");
+}
 
 }  // namespace
 
@@ -187,15 +199,15 @@ std::string HelperText(const Context& ctx, Helper helper) {
     case Helper::Fp16:
       return Fp16Text();
     case Helper::Fx12:
-      return Fx12Text();
+      return Fx12Text(!ctx.Mutated(Mutation::Fx12ClampDropped));
     case Helper::RoundEven:
       return RoundEvenText();
     case Helper::Rcc:
       return RccText();
     case Helper::Rfl:
-      return kRflText;
+      return RflText(ctx);
     case Helper::Ssg:
-      return kSsgText + VectorForms("vec", "arb_ssg");
+      return SsgText(ctx) + VectorForms("vec", "arb_ssg");
   }
   return "";
 }

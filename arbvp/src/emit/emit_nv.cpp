@@ -126,6 +126,12 @@ std::string DIV(Context& ctx, const Instruction& inst) {
   return Assign(ctx, inst, [&](const Comps& comps) {
     Expr a = Source(ctx, Src(inst, 0), comps);
     Expr s = Source(ctx, Src(inst, 1), {0});
+    if (ctx.Mutated(Mutation::DivByVector)) {
+      // The operand's register read as a vector, its scalar selector ignored.
+      SrcOperand vector = Src(inst, 1);
+      vector.swizzle = {Swz::X, Swz::Y, Swz::Z, Swz::W};
+      s = Source(ctx, vector, comps);
+    }
     return Expr{fmt::format("{} / {}", a.text, s.atomic ? s.text : "(" + s.text + ")"),
                 static_cast<int>(comps.size()), false};
   });
@@ -180,7 +186,10 @@ std::string RFL(Context& ctx, const Instruction& inst) {
 
 // The "set on" comparisons: 1.0 where the comparison holds, else 0.0; SFL and STR compare
 // nothing.
-std::string SEQ(Context& ctx, const Instruction& inst) { return Compare(ctx, inst, "==", "equal"); }
+std::string SEQ(Context& ctx, const Instruction& inst) {
+  if (ctx.Mutated(Mutation::SeqSneSwapped)) return Compare(ctx, inst, "!=", "notEqual");
+  return Compare(ctx, inst, "==", "equal");
+}
 std::string SFL(Context& ctx, const Instruction& inst) { return Constant(ctx, inst, "0.0"); }
 std::string SGT(Context& ctx, const Instruction& inst) {
   return Compare(ctx, inst, ">", "greaterThan");
@@ -189,6 +198,7 @@ std::string SLE(Context& ctx, const Instruction& inst) {
   return Compare(ctx, inst, "<=", "lessThanEqual");
 }
 std::string SNE(Context& ctx, const Instruction& inst) {
+  if (ctx.Mutated(Mutation::SeqSneSwapped)) return Compare(ctx, inst, "==", "equal");
   return Compare(ctx, inst, "!=", "notEqual");
 }
 std::string STR(Context& ctx, const Instruction& inst) { return Constant(ctx, inst, "1.0"); }

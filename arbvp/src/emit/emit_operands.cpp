@@ -128,7 +128,10 @@ std::string AssignImpl(Context& ctx, const Instruction& inst,
     if (inst.saturate && !ctx.Mutated(Mutation::SaturateDropped)) {
       e = Expr{fmt::format("clamp({}, 0.0, 1.0)", e.text), e.width, true};
     }
-    if (inst.signed_saturate) e = Expr{fmt::format("clamp({}, -1.0, 1.0)", e.text), e.width, true};
+    if (inst.signed_saturate) {
+      const char* low = ctx.Mutated(Mutation::SsatUnitRange) ? "0.0" : "-1.0";
+      e = Expr{fmt::format("clamp({}, {}, 1.0)", e.text, low), e.width, true};
+    }
     return Convert(ctx, e, StorageConversion(ctx, inst.dst.var, ctx.conversion));
   };
   Comps comps;

@@ -60,6 +60,7 @@ Expr Convert(Context& ctx, const Expr& e, Conversion conversion) {
     case Conversion::None:
       return e;
     case Conversion::Fp16:
+      if (ctx.Mutated(Mutation::Fp16RoundingDropped)) return e;
       ctx.helpers.insert(Helper::Fp16);
       return {fmt::format("arb_fp16({})", e.text), e.width, true};
     case Conversion::Fx12:

@@ -37,6 +37,18 @@ constexpr std::array<std::string_view, static_cast<size_t>(Mutation::kCount)> kN
     "frc-truncate",
     "sge-strict",
     "fog-color-unclamped",
+    "cc-update-ignored",
+    "cc-gt-as-ge",
+    "cc-write-mask-ignored",
+    "fp16-rounding-dropped",
+    "fx12-clamp-dropped",
+    "ssat-unit-range",
+    "ssg-zero-positive",
+    "div-by-vector",
+    "brk-ignored",
+    "rep-count-plus-one",
+    "rfl-no-double",
+    "seq-sne-swapped",
 };
 
 }  // namespace

@@ -42,6 +42,19 @@ enum class Mutation : uint8_t {
   FrcTruncate,          // FRC = x - trunc(x) instead of x - floor(x)
   SgeStrict,            // SGE compares with > instead of >=
   FogColorUnclamped,    // fog options blend the unclamped colour
+  // The NV options (NV_vertex_program2/3, NV_fragment_program_option/2).
+  CcUpdateIgnored,      // a C suffix does not update the condition code
+  CcGtAsGe,             // the GT condition code test reads as GE
+  CcWriteMaskIgnored,   // a conditional write mask "(GT.x)" writes every enabled component
+  Fp16RoundingDropped,  // H precision (and SHORT storage) computed at fp32
+  Fx12ClampDropped,     // X precision rounds to 1/1024 but does not clamp to [-2, 2047/1024]
+  SsatUnitRange,        // _SSAT clamps to [0, 1] instead of [-1, 1]
+  SsgZeroPositive,      // SSG of 0 gives 1
+  DivByVector,          // DIV divides by b's matching components instead of the scalar b.x
+  BrkIgnored,           // BRK leaves no loop
+  RepCountPlusOne,      // REP runs its block one pass more than its count
+  RflNoDouble,          // RFL reflects with (a . d) / (a . a) instead of twice it
+  SeqSneSwapped,        // SEQ compares with != and SNE with ==
   kCount,               // not a mutation: the number of enumerators
 };
 
