@@ -144,6 +144,20 @@ TEST(SpirvTest, MissingMainIsALinkError) {
                             "entry point")));
 }
 
+// glslang 12 accepts a shader that reads gl_FragDepth without writing it but leaves out the
+// DepthReplacing execution mode that Vulkan requires: spirv-val catches the invalid module
+// (found by fuzz_glsl450; fuzz/regressions/glsl450).
+TEST(SpirvTest, GlslangsInvalidModulesAreCaught) {
+  std::vector<Message> messages = CompileErrors(
+      "#version 450\nlayout(location = 0) out vec4 o;\nvoid main() { o = vec4(gl_FragDepth); }\n",
+      Stage::Fragment);
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0].tool, "spirv-val");
+  EXPECT_THAT(messages[0].text,
+              HasSubstr("[VUID-FragDepth-FragDepth-04216] Vulkan spec requires DepthReplacing "
+                        "execution mode to be declared when using BuiltIn FragDepth."));
+}
+
 // --- spirv-val -------------------------------------------------------------------------------
 
 TEST(ValidateSpirvTest, RejectsABadMagicNumber) {
@@ -264,6 +278,29 @@ TEST(HlslTest, PointSizeIsRefused) {
   std::string msl;
   EXPECT_TRUE(SpirvToMsl(spirv, &msl, &messages));
   EXPECT_THAT(msl, HasSubstr("float gl_PointSize [[point_size]];"));
+}
+
+// Push constants have the std430 layout: an array of vec2 has a stride of 8 bytes, which no
+// HLSL constant buffer has (found by fuzz_glsl450). MSL takes it.
+TEST(HlslTest, Std430ArraysAreRefused) {
+  std::vector<uint32_t> spirv;
+  std::vector<Message> messages;
+  ASSERT_TRUE(CompileGlslToSpirv(
+      "#version 450\nlayout(push_constant) uniform Local { vec2 local[2]; } local;\n"
+      "layout(location = 0) in vec4 p;\n"
+      "void main() { gl_Position = p + local.local[1].xyxy; }\n",
+      Stage::Vertex, &spirv, &messages));
+  std::string hlsl;
+  EXPECT_FALSE(SpirvToHlsl(spirv, &hlsl, &messages));
+  EXPECT_THAT(messages,
+              ElementsAre(IsMessage(Severity::Error, "spirv-cross", 0,
+                                    "cbuffer ID 24 (name: Local), member index 0 (name: local) "
+                                    "cannot be expressed with either HLSL packing layout or "
+                                    "packoffset.")));
+  messages.clear();
+  std::string msl;
+  EXPECT_TRUE(SpirvToMsl(spirv, &msl, &messages));
+  EXPECT_THAT(msl, HasSubstr("float2 local[2];"));
 }
 
 TEST(ValidateHlslTest, BadHlslGivesItsLine) {
