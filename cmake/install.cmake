@@ -21,7 +21,8 @@ foreach(lib compiler arbvp glsl targets runtime)
 endforeach()
 # glstate is header-only (an INTERFACE library): its headers and its target.
 set_target_properties(arbiter_glstate PROPERTIES EXPORT_NAME glstate)
-install(TARGETS arbiter_glstate EXPORT arbiterLibraryTargets)
+install(TARGETS arbiter_glstate EXPORT arbiterLibraryTargets
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/glstate/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # arbvp is three libraries (front end, emitter, interpreter) behind arbiter::arbvp.
 foreach(part front emit exec)

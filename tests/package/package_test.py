@@ -3,7 +3,8 @@
 has a space), then the man page, the bash completion, examples/cmake-pipeline built against
 it with Ninja and with Make (one arbiter step per shader: a second build runs nothing, touching
 one shader re-runs its step alone, a rejected shader fails the build with its diagnostic and
-leaves no output), and examples/api-check, a C++ program linked with the installed libraries.
+leaves no output), examples/api-check, a C++ program linked with the installed libraries, and
+examples/glstate-check, a host program linked with the header-only arbiter::glstate alone.
 
 Usage: package_test.py BUILD_DIR SOURCE_DIR CMAKE CXX_COMPILER
 """
@@ -219,6 +220,22 @@ try:
     code, out = run([api_check, os.path.join(broken, "shaders", "water.fp")])
     check(code == 1 and re.search(r"water\.fp:\d+:\d+: error: ", out) is not None,
           f"api-check rejects a broken program with a diagnostic (exit {code})")
+
+    # --- examples/glstate-check: the header-only host library alone ---------------------
+    gs_build = os.path.join(tmp, "glstate-check")
+    must([cmake, "-S", os.path.join(source_dir, "examples", "glstate-check"), "-B", gs_build,
+          "-G", "Ninja", f"-DCMAKE_PREFIX_PATH={prefix}", f"-DCMAKE_CXX_COMPILER={cxx}"],
+         "configure examples/glstate-check")
+    must([cmake, "--build", gs_build], "build examples/glstate-check against arbiter::glstate")
+    glstate_check = os.path.join(gs_build, "glstate-check")
+    code, out = run([glstate_check, "state.light[1].half", "state.fog.params",
+                     "state.matrix.mvp.row[2]", "program.env[3]"])
+    check(code == 0 and out == "state.light[1].half = 0 -0.707107 0.707107 1\n"
+          "state.fog.params = 1 2 6 0.25\nstate.matrix.mvp.row[2] = 0 0 -1 2\n"
+          "program.env[3] = 1 2 3 4\n", f"glstate-check computes the uniforms (exit {code})")
+    code, out = run([glstate_check, "state.matrix.modelview.row[0]"])
+    check(code == 1 and "not a uniform" in out,
+          f"glstate-check refuses a non-canonical spelling (exit {code})")
     if failures:
         print(out)
 finally:
