@@ -336,11 +336,13 @@ TEST(MslTest, VertexShader) {
            "    float4 result_color [[user(locn0)]];",
            "    float4 result_texcoord0 [[user(locn1)]];",
            "    float4 gl_Position [[position]];",
-           "vertex main0_out main0(main0_in in [[stage_in]], constant ArbVertexState& state "
-           "[[buffer(0)]], constant ArbVertexLocal& local [[buffer(30)]])",
        }) {
     EXPECT_THAT(msl, HasSubstr(std::string(line) + "\n"));
   }
+  // The uniform block at its binding, the push constants at buffer 30.
+  EXPECT_THAT(msl, HasSubstr("vertex main0_out main0(main0_in in [[stage_in]], constant "
+                             "ArbVertexState& state [[buffer(0)]], constant ArbVertexLocal& "
+                             "local [[buffer(30)]])\n"));
 }
 
 TEST(MslTest, FragmentShader) {
