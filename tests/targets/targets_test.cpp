@@ -374,6 +374,62 @@ TEST(MslTest, FragmentShader) {
   EXPECT_THAT(msl, HasSubstr("texture2.sample_compare(texture2Smplr, "));
 }
 
+// --- the whole pipeline on every shader of corpus/glsl450 ---------------------------------------
+
+class CorpusTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CorpusTest, EveryTargetWithoutAMessage) {
+  Stage stage = GetParam().ends_with(".vert") ? Stage::Vertex : Stage::Fragment;
+  std::string glsl = ReadCorpus(GetParam());
+  std::vector<Message> messages;
+  EXPECT_TRUE(ValidateGlsl(glsl, stage, GlslDialect::Vulkan450, &messages));
+  std::vector<uint32_t> spirv;
+  ASSERT_TRUE(CompileGlslToSpirv(glsl, stage, &spirv, &messages));
+  EXPECT_TRUE(ValidateSpirv(spirv, &messages));
+  std::string hlsl;
+  ASSERT_TRUE(SpirvToHlsl(spirv, &hlsl, &messages));
+  EXPECT_TRUE(ValidateHlsl(hlsl, stage, &messages));
+  std::string msl;
+  EXPECT_TRUE(SpirvToMsl(spirv, &msl, &messages));
+  EXPECT_THAT(messages, IsEmpty());
+}
+
+// The files, listed by hand: a new one is a new test case, named here.
+INSTANTIATE_TEST_SUITE_P(Glsl450, CorpusTest,
+                         ::testing::Values("arb_vertex.vert", "arb_fragment.frag",
+                                           "arb_vertex_indexed.vert", "arb_fragment_outputs.frag"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = param.param;
+                           for (char& c : name) {
+                             if (c == '.') c = '_';
+                           }
+                           return name;
+                         });
+
+TEST(CorpusTest, ArraysClipDistancesAndFacing) {
+  std::string hlsl;
+  std::string msl;
+  std::vector<Message> messages;
+  std::vector<uint32_t> vertex = Compile("arb_vertex_indexed.vert", Stage::Vertex);
+  ASSERT_TRUE(SpirvToHlsl(vertex, &hlsl, &messages));
+  ASSERT_TRUE(SpirvToMsl(vertex, &msl, &messages));
+  // An array of varyings takes consecutive locations: one HLSL semantic, MSL one per element.
+  EXPECT_THAT(hlsl, HasSubstr("    float4 result_texcoord[2] : TEXCOORD3;\n"));
+  EXPECT_THAT(hlsl, HasSubstr("    float gl_ClipDistance0 : SV_ClipDistance0;\n"));
+  EXPECT_THAT(msl, HasSubstr("    float4 result_texcoord_0 [[user(locn3)]];\n"
+                             "    float4 result_texcoord_1 [[user(locn4)]];\n"));
+  EXPECT_THAT(msl, HasSubstr("    float gl_ClipDistance [[clip_distance]] [1];\n"));
+  std::vector<uint32_t> fragment = Compile("arb_fragment_outputs.frag", Stage::Fragment);
+  ASSERT_TRUE(SpirvToHlsl(fragment, &hlsl, &messages));
+  ASSERT_TRUE(SpirvToMsl(fragment, &msl, &messages));
+  EXPECT_THAT(hlsl, HasSubstr("Texture1D<float4> texture0 : register(t1);\n"));
+  EXPECT_THAT(hlsl, HasSubstr("    bool gl_FrontFacing : SV_IsFrontFace;\n"));
+  EXPECT_THAT(hlsl, HasSubstr("    float4 result_color1 : SV_Target1;\n"));
+  EXPECT_THAT(msl, HasSubstr("    float4 result_color1 [[color(1)]];\n"));
+  EXPECT_THAT(msl, HasSubstr("bool gl_FrontFacing [[front_facing]]"));
+  EXPECT_THAT(messages, IsEmpty());
+}
+
 // --- GLSL of every dialect -------------------------------------------------------------------
 
 struct DialectCase {
