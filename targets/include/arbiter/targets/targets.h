@@ -62,9 +62,10 @@ bool SpirvToHlsl(std::span<const uint32_t> spirv, std::string* hlsl,
 inline constexpr uint32_t kHlslPushConstantRegister = 13;
 
 // Metal Shading Language 2.0 for macOS, entry point main0 (main is reserved in MSL). The module
-// is validated first. Vertex inputs are [[attribute(location)]], varyings [[user(locn)]],
-// fragment outputs [[color(location)]]; a uniform block at binding B is [[buffer(B)]], a
-// combined sampler `<name>` at binding B is [[texture(B)]] and `<name>Smplr` [[sampler(B)]];
+// is validated first. At location L, vertex inputs are [[attribute(L)]], varyings
+// [[user(locnL)]] and fragment outputs [[color(L)]]; a uniform block at binding B is
+// [[buffer(B)]], a combined sampler `<name>` at binding B is [[texture(B)]] and `<name>Smplr`
+// [[sampler(B)]];
 // the push constant block is [[buffer(30)]] (kMslPushConstantBuffer, the last of Metal's 31
 // buffer slots). Descriptor sets are ignored.
 bool SpirvToMsl(std::span<const uint32_t> spirv, std::string* msl, std::vector<Message>* messages);
