@@ -106,6 +106,21 @@ void ResolveFlow(Program* program, const compiler::SourceFile& source, const Flo
       default:
         break;
     }
+    // NV_fragment_program2 3.11.3.Y: "A fragment program that accesses A0.x outside a
+    // LOOP/ENDLOOP block will fail to load."
+    if (program->kind == ProgramKind::Fragment) {
+      for (size_t s = 0; s < inst.src_count; ++s) {
+        if (!inst.src[s].relative) continue;
+        bool in_loop = false;
+        for (int open : blocks) {
+          in_loop = in_loop || program->instructions[static_cast<size_t>(open)].op == Opcode::LOOP;
+        }
+        if (!in_loop) {
+          report(Diag::FlowLoopIndexOutsideLoop, inst.src[s].range,
+                 "the loop index A0.x exists only inside a LOOP/ENDLOOP block");
+        }
+      }
+    }
   }
   // BRK leaves for the end of its loop.
   for (Instruction& inst : program->instructions) {

@@ -179,6 +179,40 @@ constexpr bool KeywordSizesIn3To8() {
 }
 static_assert(KeywordSizesIn3To8());
 
+// The variables no statement declares, the relatively addressed attribute and result arrays
+// and NV_fragment_program2's A0, come into being at their first use; they are moved after the
+// others, in that order, so that a printed program (which declares the others first) parses
+// back with the same numbering.
+void MoveUndeclaredLast(Program* program) {
+  auto undeclared = [&](const Variable& v) {
+    return v.relative_array ||
+           (program->kind == ProgramKind::Fragment && v.kind == VarKind::Address);
+  };
+  const size_t n = program->vars.size();
+  std::vector<int> to(n);
+  int next = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t v = 0; v < n; ++v) {
+      if (undeclared(program->vars[v]) == (pass == 1)) to[v] = next++;
+    }
+  }
+  if (std::is_sorted(to.begin(), to.end())) return;
+  std::vector<Variable> vars(n);
+  for (size_t v = 0; v < n; ++v) vars[static_cast<size_t>(to[v])] = std::move(program->vars[v]);
+  program->vars = std::move(vars);
+  auto renumber = [&](int* var) {
+    if (*var >= 0 && static_cast<size_t>(*var) < n) *var = to[static_cast<size_t>(*var)];
+  };
+  for (Instruction& inst : program->instructions) {
+    renumber(&inst.dst.var);
+    renumber(&inst.dst.address_var);
+    for (SrcOperand& src : inst.src) {
+      renumber(&src.var);
+      renumber(&src.address_var);
+    }
+  }
+}
+
 class Parser {
  public:
   // The parser lexes as it goes, keeping only a window of tokens (see ReportLexicalErrors).
@@ -204,6 +238,7 @@ class Parser {
       ResolveFlow(program_.get(), source_, [this](Diag diag, Range range, std::string message) {
         return ReportDiagnostic(diag, range, std::move(message));
       });
+      MoveUndeclaredLast(program_.get());
     }
     return std::move(program_);
   }
@@ -537,6 +572,11 @@ class Parser {
   [[nodiscard]] bool ParseEstablishName(Token* name, bool* fresh) {
     if (!ExpectIdent("a variable name", name)) return false;
     std::string_view word = Text(*name);
+    if (fp() && program_->NvLevel() >= 2 && Is(word, "A0")) {
+      return Fail(Diag::SyntaxReservedName, RangeOf(*name),
+                  "'A0' is NV_fragment_program2's predefined address register (the loop index) "
+                  "and cannot name a variable");
+    }
     if (IsReservedWord(word, kind_) || IsNvReservedWord(word, *program_)) {
       return Fail(Diag::SyntaxReservedName, RangeOf(*name),
                   fmt::format("'{}' is a reserved word and cannot name a variable", word));
@@ -611,7 +651,7 @@ class Parser {
     if (!ParseEstablishName(&name, &fresh)) return false;
     if (!Expect(Tok::Equals, "'=' after the attribute name")) return false;
     Binding binding;
-    if (!ParseAttribStatementBinding(&binding)) {
+    if (!ParseAttribStatementBinding(&binding) || !RejectRelativeDeclaration(binding)) {
       if (fresh) Poison(name);
       return false;
     }
@@ -651,12 +691,22 @@ class Parser {
     Binding binding;
     bool ok = PeekIdent("result") ? ParseResultBinding(&binding)
                                   : FailExpected("a result binding ('result.*')");
-    if (!ok) {
+    if (!ok || !RejectRelativeDeclaration(binding)) {
       if (fresh) Poison(name);
       return false;
     }
     AddBoundVariable(name, fresh, VarKind::Output, binding);
     return ExpectSemicolon("OUTPUT statement");
+  }
+
+  // The NV grammars let ATTRIB and OUTPUT bind "vertex.attrib[A0.x+n]" too; no compiler
+  // emits that (Cg indexes in the instruction), and arbiter takes it only in instructions.
+  [[nodiscard]] bool RejectRelativeDeclaration(const Binding& binding) {
+    if (!relative_pending_) return true;
+    relative_pending_ = false;
+    return Fail(Diag::SyntaxNvConstruct, binding.selector,
+                "arbiter accepts a relatively addressed attribute or result array only in an "
+                "instruction ('MOV r, vertex.attrib[A0.x+1];'), not in a declaration");
   }
 
   // <TEMP_statement> ::= "TEMP" <varNameList>; <ADDRESS_statement> likewise
@@ -870,6 +920,35 @@ class Parser {
     b->indexed = true;
     return true;
   }
+  // "[" n "]", or with NV_vertex_program3 / NV_fragment_program2 "[" A0.x+n "]": an element
+  // of the attribute or result array `array` chosen by an address register. The relative
+  // index waits in relative_ for the instruction operand that takes it.
+  [[nodiscard]] bool ParseIndexOrRelative(Binding* b, std::string_view what, bool required,
+                                          std::string_view array) {
+    if (!PeekIs(Tok::LBracket) || !PeekIs(Tok::Ident, 1)) {
+      return required ? ParseRequiredIndex(b, what) : ParseOptionalIndex(b, what);
+    }
+    const Token open = Advance();
+    if (program_->NvLevel() < 2) {
+      return Fail(
+          Diag::OptionRequired, RangeOf(Peek()),
+          fmt::format("'{}[{}.x]': relative addressing of attribute and result arrays "
+                      "needs OPTION {}",
+                      array, Text(Peek()), vp() ? "NV_vertex_program3" : "NV_fragment_program2"));
+    }
+    if (fp() && array != "fragment.texcoord") {
+      return Fail(Diag::OperandRelativeFp, RangeOf(Peek()),
+                  "NV_fragment_program2 indexes only fragment.texcoord with its loop index A0.x");
+    }
+    relative_ = SrcOperand{};
+    if (!ParseRelativeIndex(&relative_, /*attribute_array=*/true)) return false;
+    if (!Expect(Tok::RBracket, "']' after the relative index")) return false;
+    relative_pending_ = true;
+    b->indexed = true;
+    b->selector = {open.begin, last_end_};
+    return true;
+  }
+
   // Consumes "." <word> when the word after the dot is one of `words`.
   bool AcceptDotWord(std::initializer_list<std::string_view> words, std::string_view* got) {
     if (!PeekIs(Tok::Dot) || !PeekIs(Tok::Ident, 1)) return false;
@@ -957,13 +1036,13 @@ class Parser {
       b.vertex_attrib = VertexAttrib::FogCoord;
     } else if (Is(w, "texcoord")) {
       b.vertex_attrib = VertexAttrib::TexCoord;
-      ok = ParseOptionalIndex(&b, "a texture coordinate number");
+      ok = ParseIndexOrRelative(&b, "a texture coordinate number", false, "vertex.texcoord");
     } else if (Is(w, "matrixindex")) {
       b.vertex_attrib = VertexAttrib::MatrixIndex;
       ok = ParseRequiredIndex(&b, "a matrix index number");
     } else {
       b.vertex_attrib = VertexAttrib::Generic;
-      ok = ParseRequiredIndex(&b, "a generic attribute number");
+      ok = ParseIndexOrRelative(&b, "a generic attribute number", true, "vertex.attrib");
     }
     if (!ok) return false;
     b.range = {start.begin, last_end_};
@@ -993,7 +1072,7 @@ class Parser {
       ok = RejectUnknownSuffix({"primary", "secondary"}, "colour type");
     } else if (Is(w, "texcoord")) {
       b.fragment_attrib = FragmentAttrib::TexCoord;
-      ok = ParseOptionalIndex(&b, "a texture coordinate number");
+      ok = ParseIndexOrRelative(&b, "a texture coordinate number", false, "fragment.texcoord");
     } else if (Is(w, "fogcoord")) {
       b.fragment_attrib = FragmentAttrib::FogCoord;
     } else if (Is(w, "facing")) {
@@ -1066,7 +1145,7 @@ class Parser {
       b->result = ResultReg::PointSize;
     } else {
       b->result = ResultReg::TexCoord;
-      return ParseOptionalIndex(b, "a texture coordinate number");
+      return ParseIndexOrRelative(b, "a texture coordinate number", false, "result.texcoord");
     }
     return true;
   }
@@ -1639,7 +1718,16 @@ class Parser {
     if (PeekIdent("result")) {
       Binding b;
       if (!ParseResultBinding(&b)) return false;
-      dst.var = AddImplicit(VarKind::Output, b);
+      if (relative_pending_) {
+        relative_pending_ = false;
+        dst.var = AddRelativeArray(VarKind::Output, b);
+        dst.relative = true;
+        dst.address_var = relative_.address_var;
+        dst.address_component = relative_.address_component;
+        dst.index = relative_.index;
+      } else {
+        dst.var = AddImplicit(VarKind::Output, b);
+      }
     } else if (t.kind == Tok::Ident && IsBindingStart(t)) {
       return Fail(Diag::OperandDstReadOnly, RangeOf(t),
                   fmt::format("cannot write to a '{}' binding: destinations are temporaries and "
@@ -1824,8 +1912,47 @@ class Parser {
     Binding b;
     bool ok = kind == VarKind::Attrib ? ParseAttribBinding(&b) : ParseParamSingleItem(false, &b);
     if (!ok) return false;
+    if (relative_pending_) {
+      relative_pending_ = false;
+      out->var = AddRelativeArray(kind, b);
+      out->indexed = true;
+      out->relative = true;
+      out->address_var = relative_.address_var;
+      out->address_component = relative_.address_component;
+      out->index = relative_.index;
+      return true;
+    }
     out->var = AddImplicit(kind, b);
     return true;
+  }
+
+  // The unnamed array behind a relatively addressed binding: one element per texture
+  // coordinate set or generic attribute (the implementation's counts, Mesa's 8 and 16),
+  // shared by every operand that indexes the same array.
+  int AddRelativeArray(VarKind kind, const Binding& b) {
+    const bool generic =
+        b.kind == BindingKind::VertexAttrib && b.vertex_attrib == VertexAttrib::Generic;
+    const int size = generic ? 16 : 8;
+    for (size_t v = 0; v < program_->vars.size(); ++v) {
+      const Variable& var = program_->vars[v];
+      if (var.relative_array && var.kind == kind && var.bindings[0].kind == b.kind &&
+          var.bindings[0].vertex_attrib == b.vertex_attrib &&
+          var.bindings[0].fragment_attrib == b.fragment_attrib &&
+          var.bindings[0].result == b.result) {
+        return static_cast<int>(v);
+      }
+    }
+    Binding element = b;
+    const int index = AddSimpleVariable(kind, nullptr, &element);
+    Variable& var = program_->vars[static_cast<size_t>(index)];
+    var.is_array = true;
+    var.relative_array = true;
+    var.bindings.clear();
+    for (int i = 0; i < size; ++i) {
+      element.index = i;
+      var.bindings.push_back(element);
+    }
+    return index;
   }
 
   // <srcReg> ::= <vertexAttribReg> | <temporaryReg> | <progParamReg>, with array access.
@@ -1840,6 +1967,7 @@ class Parser {
         Token start = Peek();
         Binding ignored;
         if (!ParseResultBinding(&ignored)) return false;
+        relative_pending_ = false;
         return Fail(Diag::OperandSrcWriteOnly, RangeOf(start),
                     "cannot read a result register: results are write-only");
       }
@@ -1909,8 +2037,9 @@ class Parser {
     return Expect(Tok::RBracket, "']' after the array index");
   }
   // <progParamArrayRel> ::= <addrReg> <addrComponent> <addrRegRelOffset>
-  [[nodiscard]] bool ParseRelativeIndex(SrcOperand* src) {
+  [[nodiscard]] bool ParseRelativeIndex(SrcOperand* src, bool attribute_array = false) {
     Token addr = Advance();
+    if (fp() && attribute_array) return ParseLoopIndex(addr, src);
     if (fp()) {
       return Fail(Diag::OperandRelativeFp, RangeOf(addr),
                   "relative addressing exists only in vertex programs; fragment programs index "
@@ -1951,6 +2080,36 @@ class Parser {
                     fmt::format("relative offset {}{} is out of range; offsets go from -64 to +63",
                                 negative ? "-" : "+", offset));
       }
+      src->index = negative ? -offset : offset;
+    }
+    return true;
+  }
+
+  // NV_fragment_program2's "A0.x" (+ offset) in fragment.texcoord[A0.x+n]: the predefined
+  // address register holding the innermost LOOP's index (3.11.3.Y); only its x exists.
+  [[nodiscard]] bool ParseLoopIndex(const Token& addr, SrcOperand* src) {
+    if (!Is(Text(addr), "A0")) {
+      return Fail(Diag::DeclWrongKind, RangeOf(addr),
+                  fmt::format("'{}' is not an address register; fragment programs index "
+                              "fragment.texcoord with the loop index 'A0.x'",
+                              Text(addr)));
+    }
+    const Symbol* symbol = symbols_.Find("A0");
+    src->address_var = symbol ? symbol->var : AddSimpleVariable(VarKind::Address, &addr, nullptr);
+    if (src->address_var < 0) return false;  // poisoned: already reported
+    src->relative = true;
+    Token comp;
+    if (!ExpectDot("A0") || !ExpectIdent("the address component 'x'", &comp)) return false;
+    if (!Is(Text(comp), "x")) {
+      return Fail(
+          Diag::OperandAddressComponent, RangeOf(comp),
+          fmt::format("address component '{}' is invalid; the loop index is 'A0.x'", Text(comp)));
+    }
+    if (PeekIs(Tok::Plus) || PeekIs(Tok::Minus)) {
+      bool negative = Is(Text(Advance()), "-");
+      Token n;
+      int offset = 0;
+      if (!ExpectIntegerValue("an offset", &n, &offset)) return false;
       src->index = negative ? -offset : offset;
     }
     return true;
@@ -2171,6 +2330,10 @@ class Parser {
   DiagnosticSink* sink_;
   size_t pos_ = 0;
   uint32_t last_end_ = 0;
+  // A relative index of an attribute or result array, parsed with its binding, until the
+  // operand that holds the binding takes it.
+  SrcOperand relative_;
+  bool relative_pending_ = false;
   std::unique_ptr<Program> program_;
   SymbolTable symbols_;
 };

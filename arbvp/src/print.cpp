@@ -119,6 +119,7 @@ class Printer {
     }
     // Every variable in IR order, so that parsing the text again numbers them the same way.
     for (size_t i = 0; i < program_.vars.size(); ++i) {
+      if (Undeclared(program_.vars[i])) continue;
       out += Declaration(program_.vars[i], names_[i], program_.kind) + "\n";
     }
     for (size_t i = 0; i <= program_.instructions.size(); ++i) {
@@ -175,8 +176,30 @@ class Printer {
     return text + ";";
   }
 
+  // Relatively addressed attribute and result arrays, and NV_fragment_program2's A0, have no
+  // declaration: the program spells them where it uses them.
+  bool Undeclared(const Variable& var) const {
+    return var.relative_array ||
+           (program_.kind == ProgramKind::Fragment && var.kind == VarKind::Address);
+  }
+
+  // "vertex.attrib[A0.x + 2]": the array's spelling and a relative index.
+  std::string RelativeText(int var, int address_var, uint8_t component, int index) {
+    const Variable& v = program_.vars.at(static_cast<size_t>(var));
+    std::string text = v.relative_array ? BindingName(v.bindings.at(0), program_.kind)
+                                        : names_.at(static_cast<size_t>(var));
+    if (v.relative_array) text.resize(text.rfind('['));
+    std::string address =
+        fmt::format("{}.{}", names_.at(static_cast<size_t>(address_var)), "xyzw"[component & 3]);
+    if (index > 0) return fmt::format("{}[{} + {}]", text, address, index);
+    if (index < 0) return fmt::format("{}[{} - {}]", text, address, -index);
+    return fmt::format("{}[{}]", text, address);
+  }
+
   std::string Dst(const DstOperand& dst) {
-    std::string text = names_.at(static_cast<size_t>(dst.var));
+    std::string text =
+        dst.relative ? RelativeText(dst.var, dst.address_var, dst.address_component, dst.index)
+                     : names_.at(static_cast<size_t>(dst.var));
     // An ARB address register always spells its only component (<addrWriteMask> is
     // required); NV address registers are vectors.
     bool address = program_.vars.at(static_cast<size_t>(dst.var)).kind == VarKind::Address;
@@ -199,11 +222,7 @@ class Printer {
   std::string Register(const SrcOperand& src) {
     std::string text = names_.at(static_cast<size_t>(src.var));
     if (src.relative) {
-      std::string address = fmt::format("{}.{}", names_.at(static_cast<size_t>(src.address_var)),
-                                        "xyzw"[src.address_component]);
-      if (src.index > 0) return fmt::format("{}[{} + {}]", text, address, src.index);
-      if (src.index < 0) return fmt::format("{}[{} - {}]", text, address, -src.index);
-      return fmt::format("{}[{}]", text, address);
+      return RelativeText(src.var, src.address_var, src.address_component, src.index);
     }
     if (src.indexed) text += fmt::format("[{}]", src.index);
     return text;

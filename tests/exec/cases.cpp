@@ -1312,6 +1312,15 @@ void NvFlowCases(Table& t) {
        "TEMP c;\nTEMP r;\nMOV r, 0;\nMOVC c, e0;\nBRA label1 (LT.xyzw);\nMOV r, e1;\nlabel1:\n"
        "BRA label2 (LT.wyzw);\nMOV r, e2;\nlabel2:\nMOV result.texcoord[0], r;\n",
        {kCcExample, {1, 1, 1, 1}, {2, 2, 2, 2}}, {Eq(kTex0, {2, 2, 2, 2})});
+  // NV_vertex_program3 2.14.3.4: result.texcoord[A0.x + n] writes set A0.x + n: -1 + 1 = 0.
+  const std::string relative = "ADDRESS A0;\nARL A0.x, e0.x;\nMOV result.texcoord[A0.x + 1], e1;\n";
+  NvVp(t, "nv_relative_result", "NV_vertex_program3 2.14.3.4", relative,
+       {{-1, 0, 0, 0}, {1, 2, 3, 4}}, {Eq(kTex0, {1, 2, 3, 4})});
+  // Set 7 + 1 = 8 does not exist: the write's effects are undefined.
+  NvVp(t, "nv_relative_result_outside", "NV_vertex_program3 2.14.3.4",
+       "ADDRESS A0;\nARL A0.x, e0.x;\nMOV result.texcoord[0], e1;\n"
+       "MOV result.texcoord[A0.x + 1], e1;\n",
+       {{7, 0, 0, 0}, {1, 2, 3, 4}}, {Undef(kTex0, 0xF, "outside the array")});
   // An endless loop ends at MAX_PROGRAM_EXEC_INSTRUCTIONS_NV: undefined results.
   NvVp(t, "nv_exec_limit", "NV_vertex_program2_option 2.14.4.X",
        "MOV result.texcoord[0], e0;\ntop:\nBRA top;\n", {{1, 2, 3, 4}},

@@ -187,6 +187,9 @@ void CheckBindings(const CheckContext& ctx) {
   // First binding of each generic slot, by conventional (0) and generic (1) spelling.
   std::map<int, const Binding*> seen[2];
   for (const Variable& var : ctx.program.vars) {
+    // A relatively addressed attribute or result array binds no element of its own: its
+    // index is the address register's, checked when the program runs.
+    if (var.relative_array) continue;
     for (size_t i = 0; i < var.bindings.size(); ++i) {
       const Binding& b = var.bindings[i];
       // A range (program.env[a..b], a matrix's rows) expands to consecutive bindings of one

@@ -286,6 +286,12 @@ void CheckResources(const CheckContext& ctx) {
   LimitCounter params(ctx, ctx.StageKey("max_parameters"), reserve.parameters,
                       Diag::LimitParameters);
   DistinctBindings seen_attribs(/*signed_zero=*/true);
+  const bool vp = program.kind == ProgramKind::Vertex;
+  std::set<int> bound_slots;
+  for (const Variable& var : program.vars) {
+    if (var.kind != VarKind::Attrib || var.relative_array || !vp) continue;
+    for (const Binding& b : var.bindings) bound_slots.insert(GenericAttribSlot(b));
+  }
   DistinctBindings seen_params(/*signed_zero=*/false);
   DistinctBindings outputs(/*signed_zero=*/true);
   std::set<int> relative = RelativelyAddressed(program);
@@ -304,6 +310,12 @@ void CheckResources(const CheckContext& ctx) {
         break;
       case VarKind::Attrib:
         for (const Binding& b : var.bindings) {
+          // An element of a relatively addressed array that another binding already holds
+          // (vertex.attrib[A0.x] and vertex.position share generic attribute 0, texcoord[n]
+          // and attrib[8+n]) is one slot.
+          if (var.relative_array && vp && !bound_slots.insert(GenericAttribSlot(b)).second) {
+            continue;
+          }
           if (seen_attribs.Insert(b)) {
             attribs.Add(var.decl, [&] {
               return fmt::format("attribute binding {} ('{}')", attribs.count(),

@@ -111,15 +111,41 @@ std::string SwizzleComponent(Context& ctx, const SrcOperand& src, int comp) {
   return Source(ctx, plain, {0}).text;
 }
 
+std::string AssignTo(Context& ctx, const Instruction& inst,
+                     const std::function<Expr(const Comps&)>& value, const DestTarget& target);
+
 std::string AssignImpl(Context& ctx, const Instruction& inst,
                        const std::function<Expr(const Comps&)>& value) {
   const Variable& var = ctx.program.vars[static_cast<size_t>(inst.dst.var)];
-  DestTarget target;
   if (var.kind == VarKind::Temp) {
+    DestTarget target;
     target.lvalue = ctx.var_names[static_cast<size_t>(inst.dst.var)];
-  } else {
-    target = ResultTarget(ctx, var.bindings.at(0));
+    return AssignTo(ctx, inst, value, target);
   }
+  if (!inst.dst.relative) return AssignTo(ctx, inst, value, ResultTarget(ctx, var.bindings.at(0)));
+  // result.texcoord[A0.x + n] (NV_vertex_program3): the element the address selects, by an
+  // if-chain of constant indices; outside the array nothing is written (the spec leaves
+  // such a write undefined).
+  SrcOperand address;
+  address.address_var = inst.dst.address_var;
+  address.address_component = inst.dst.address_component;
+  address.index = inst.dst.index;
+  std::string text = fmt::format("{{\n  int arb_element = {};\n", RelativeIndex(ctx, address));
+  for (size_t i = 0; i < var.bindings.size(); ++i) {
+    text += fmt::format("  {}if (arb_element == {}) {{\n", i == 0 ? "" : "} else ", i);
+    std::string body = AssignTo(ctx, inst, value, ResultTarget(ctx, var.bindings[i]));
+    for (size_t at = 0; at < body.size();) {
+      const size_t eol = body.find('\n', at);
+      text += "    " + body.substr(at, eol == std::string::npos ? eol : eol - at + 1);
+      at = eol == std::string::npos ? body.size() : eol + 1;
+    }
+  }
+  return text + "  }\n}\n";
+}
+
+// Writes `value` to `target` under the instruction's mask, conversions and condition code.
+std::string AssignTo(Context& ctx, const Instruction& inst,
+                     const std::function<Expr(const Comps&)>& value, const DestTarget& target) {
   uint8_t mask = ctx.Mutated(Mutation::WriteMaskIgnored) ? 0xF : inst.dst.mask;
   // The result at the instruction's precision, clamped (_SAT [0, 1], _SSAT [-1, 1]), then
   // converted to the destination's storage (NV_fragment_program 3.11.4.4).

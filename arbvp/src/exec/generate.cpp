@@ -71,8 +71,8 @@ ReadInputs FindReadInputs(const Program& program, bool declared) {
   };
   if (declared) {
     for (const Variable& var : program.vars) {
-      if (var.kind == VarKind::Attrib && !var.bindings.empty())
-        r.attribs.push_back(var.bindings[0]);
+      if (var.kind == VarKind::Attrib)
+        r.attribs.insert(r.attribs.end(), var.bindings.begin(), var.bindings.end());
       if (var.kind == VarKind::Param) {
         for (const Binding& b : var.bindings) add_param(b);
       }
@@ -83,8 +83,9 @@ ReadInputs FindReadInputs(const Program& program, bool declared) {
         const SrcOperand& src = inst.src[s];
         if (src.var < 0 || static_cast<size_t>(src.var) >= program.vars.size()) continue;
         const Variable& var = program.vars[static_cast<size_t>(src.var)];
-        if (var.kind == VarKind::Attrib && !var.bindings.empty()) {
-          r.attribs.push_back(var.bindings[0]);
+        if (var.kind == VarKind::Attrib) {
+          // Every element of an attribute array read with relative addressing.
+          r.attribs.insert(r.attribs.end(), var.bindings.begin(), var.bindings.end());
         } else if (var.kind == VarKind::Param && src.relative) {
           for (const Binding& b : var.bindings) add_param(b);
         } else if (var.kind == VarKind::Param) {

@@ -195,10 +195,11 @@ class Run {
         reasons_(reasons),
         nv_(program, reasons) {}
 
-  // Executes with the attribute values `attrib` (one per variable; only Attrib ones used).
+  // Executes with the attribute values `attrib` (per variable, one per binding: an attribute
+  // array read with relative addressing has several; only Attrib ones used).
   // An ARB program runs its instructions in order; one with an NV option follows its flow
   // instructions from the label "main" (nv_flow.h).
-  void Execute(const std::vector<Reg>& attrib) {
+  void Execute(const std::vector<std::vector<Reg>>& attrib) {
     attrib_ = &attrib;
     Setup();
     const bool nv = program_.Nv();
@@ -350,9 +351,12 @@ class Run {
       const Variable& var = program_.vars[v];
       if (var.kind == VarKind::Param) {
         for (const Binding& b : var.bindings) params_[v].push_back(ParamReg(b));
-      } else if (var.kind == VarKind::Output && !var.bindings.empty()) {
-        OutKey key = KeyOf(var.bindings[0]);
-        if (!outputs_.count(key)) outputs_[key].binding = var.bindings[0];
+      } else if (var.kind == VarKind::Output) {
+        // A relatively addressed result array may write any of its elements.
+        for (const Binding& b : var.bindings) {
+          OutKey key = KeyOf(b);
+          if (!outputs_.count(key)) outputs_[key].binding = b;
+        }
       }
     }
   }
@@ -397,7 +401,7 @@ class Run {
     size_t v = static_cast<size_t>(src.var);
     switch (var.kind) {
       case VarKind::Attrib:
-        return (*attrib_)[v];
+        return FetchParam(src, var, (*attrib_)[v], where);
       case VarKind::Temp:
         return temps_[v];
       case VarKind::Param:
@@ -465,6 +469,40 @@ class Run {
       c.dev |= addr.dev;
     }
     return r;
+  }
+
+  // The element of result.texcoord[A0.x + n] (NV_vertex_program3) a write goes to. Outside
+  // the array the spec leaves the write's effects undefined ("may overwrite other programs
+  // results"): the write is dropped and its reason recorded on the results.
+  bool RelativeElement(const DstOperand& dst, const Variable& var, const std::string& where,
+                       size_t* element) {
+    SrcOperand as_src;
+    as_src.relative = true;
+    as_src.address_var = dst.address_var;
+    as_src.address_component = dst.address_component;
+    const Val addr = AddressComponent(as_src, where);
+    const bool finite = std::isfinite(addr.v) && std::fabs(addr.v) < 1.0e9f;
+    const int64_t index = finite ? static_cast<int64_t>(addr.v) + dst.index : -1;
+    if (addr.why == kDefined && addr.err == 0.0f && index >= 0 &&
+        index < static_cast<int64_t>(var.bindings.size())) {
+      *element = static_cast<size_t>(index);
+      return true;
+    }
+    // An undefined or unstable address, or one outside the array: every result may change.
+    const int why =
+        addr.why != kDefined
+            ? addr.why
+            : reasons_->Add(fmt::format(
+                  "a write to {}[{}] outside the array, or at an unstable address{}",
+                  BindingName(var.bindings[0], program_.kind).substr(0, 15), index, where));
+    for (auto& [key, out] : outputs_) {
+      for (Val& c : out.value) c.why = c.why == kDefined ? why : c.why;
+    }
+    if (index >= 0 && index < static_cast<int64_t>(var.bindings.size())) {
+      *element = static_cast<size_t>(index);
+      return true;
+    }
+    return false;
   }
 
   // VectorLoad with swizzle (or extended swizzle) and negation.
@@ -545,7 +583,9 @@ class Run {
     Reg* dest = nullptr;
     uint8_t* written = nullptr;
     if (var.kind == VarKind::Output) {
-      Output& out = outputs_[KeyOf(var.bindings[0])];
+      size_t element = 0;
+      if (inst.dst.relative && !RelativeElement(inst.dst, var, where, &element)) return;
+      Output& out = outputs_[KeyOf(var.bindings[element])];
       dest = &out.value;
       written = &out.written;
     } else if (var.kind == VarKind::Address) {
@@ -575,7 +615,7 @@ class Run {
   const ExecInputs& inputs_;
   const compiler::SourceFile* source_;
   Reasons* reasons_;
-  const std::vector<Reg>* attrib_ = nullptr;
+  const std::vector<std::vector<Reg>>* attrib_ = nullptr;
   std::vector<std::vector<Reg>> params_;
   std::vector<Reg> temps_;
   std::vector<Reg> address_;
@@ -588,24 +628,23 @@ class Run {
   exec::NvMachine nv_;
 };
 
-std::vector<Reg> VertexAttribs(const Program& program, const VertexInput& in) {
-  std::vector<Reg> attribs(program.vars.size());
+std::vector<std::vector<Reg>> VertexAttribs(const Program& program, const VertexInput& in) {
+  std::vector<std::vector<Reg>> attribs(program.vars.size());
   for (size_t v = 0; v < program.vars.size(); ++v) {
     const Variable& var = program.vars[v];
-    if (var.kind == VarKind::Attrib && !var.bindings.empty()) {
-      attribs[v] = VertexAttribValue(var.bindings[0], in);
-    }
+    if (var.kind != VarKind::Attrib) continue;
+    for (const Binding& b : var.bindings) attribs[v].push_back(VertexAttribValue(b, in));
   }
   return attribs;
 }
 
-std::vector<Reg> FragmentAttribs(const Program& program, const FragmentSource& source) {
-  std::vector<Reg> attribs(program.vars.size());
+std::vector<std::vector<Reg>> FragmentAttribs(const Program& program,
+                                              const FragmentSource& source) {
+  std::vector<std::vector<Reg>> attribs(program.vars.size());
   for (size_t v = 0; v < program.vars.size(); ++v) {
     const Variable& var = program.vars[v];
-    if (var.kind == VarKind::Attrib && !var.bindings.empty()) {
-      attribs[v] = FragmentAttribValue(var.bindings[0], source);
-    }
+    if (var.kind != VarKind::Attrib) continue;
+    for (const Binding& b : var.bindings) attribs[v].push_back(FragmentAttribValue(b, source));
   }
   return attribs;
 }

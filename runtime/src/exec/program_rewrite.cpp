@@ -152,6 +152,18 @@ class Editor {
     for (size_t v = 0; v < count; ++v) {
       const Variable& var = program_.vars[v];
       if (var.kind != VarKind::Output || !select(var.bindings.at(0))) continue;
+      if (var.relative_array) {
+        // result.texcoord[A0.x + n] of NV_vertex_program3, which Mesa's ARB engine never
+        // runs (verify compares the NV programs through their translation): each element
+        // gets its temporary, so that the passes are planned, and the writes stay.
+        for (const Binding& b : var.bindings) {
+          if (!key_temp.count(KeyOf(b))) {
+            key_temp.emplace(KeyOf(b),
+                             AddVar(VarKind::Temp, fmt::format("arbiter_out{}_{}", v, b.index)));
+          }
+        }
+        continue;
+      }
       RegisterKey key = KeyOf(var.bindings.at(0));
       auto it = key_temp.find(key);
       if (it == key_temp.end()) {
@@ -184,9 +196,12 @@ std::vector<OutputSlot> WrittenOutputs(const Program& program) {
     if (inst.op == arbvp::Opcode::KIL || inst.dst.var < 0) continue;
     const Variable& var = program.vars.at(static_cast<size_t>(inst.dst.var));
     if (var.kind != VarKind::Output) continue;
-    OutputSlot& slot = slots[KeyOf(var.bindings.at(0))];
-    if (slot.written == 0) slot.binding = var.bindings.at(0);
-    slot.written |= inst.dst.mask;
+    // result.texcoord[A0.x + n] may write any element of its array.
+    for (const arbvp::Binding& b : var.bindings) {
+      OutputSlot& slot = slots[KeyOf(b)];
+      if (slot.written == 0) slot.binding = b;
+      slot.written |= inst.dst.mask;
+    }
   }
   std::vector<OutputSlot> out;
   for (auto& [key, slot] : slots) out.push_back(slot);
@@ -205,11 +220,12 @@ int SpareGeneric(const Program& vp, RunPlan* plan) {
   std::set<int> taken;
   for (const Variable& var : vp.vars) {
     if (var.kind != VarKind::Attrib) continue;
-    const Binding& b = var.bindings.at(0);
-    taken.insert(arbvp::GenericAttribSlot(b));
-    if (b.vertex_attrib == VertexAttrib::Generic) {
-      if (b.index == 0) plan->reads_generic0 = true;
-      plan->generics.insert(b.index);
+    for (const Binding& b : var.bindings) {  // every element of a relatively addressed array
+      taken.insert(arbvp::GenericAttribSlot(b));
+      if (b.vertex_attrib == VertexAttrib::Generic) {
+        if (b.index == 0) plan->reads_generic0 = true;
+        plan->generics.insert(b.index);
+      }
     }
   }
   for (int n : {7, 6, 15, 14, 13, 12, 11, 10, 9, 8, 5, 4, 3, 2, 1}) {

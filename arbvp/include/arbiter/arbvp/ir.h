@@ -203,6 +203,10 @@ struct Variable {
   Range decl;  // the declared name, or the implicit binding's text
   bool is_array = false;
   std::vector<Binding> bindings;  // Attrib/Output: one; Param: one per element; else none
+  // An attribute or result array that a binding addresses relatively (NV_vertex_program3's
+  // vertex.attrib[A0.x+n], vertex.texcoord[..] and result.texcoord[..];
+  // NV_fragment_program2's fragment.texcoord[A0.x+n]): one binding per element.
+  bool relative_array = false;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -241,6 +245,12 @@ struct DstOperand {
   int var = -1;
   uint8_t mask = 0xF;  // bit 0 = x ... bit 3 = w
   CcTest cc;           // NV conditional write mask: "R0.xy (GT.x)" writes where the test holds
+  // result.texcoord[A0.x + index] (NV_vertex_program3): element A0.x + index of a
+  // relative_array output.
+  bool relative = false;
+  int address_var = -1;
+  uint8_t address_component = 0;
+  int index = 0;
   Range range;
 };
 
