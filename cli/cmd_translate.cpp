@@ -15,6 +15,7 @@
 #include "cli.h"
 #include "load_arb.h"
 #include "options.h"
+#include "translate_targets.h"
 
 namespace arbiter::cli {
 namespace {
@@ -27,7 +28,9 @@ struct TranslateCommandOptions {
   std::string bindings;  // --bindings
   bool pair = false;
   bool no_comments = false;
-  std::string mutation = "none";  // test-only: --mutation (hidden)
+  std::string target = "glsl110";  // --target
+  std::string state;               // --state: "builtins", "uniforms" or "" (the target's)
+  std::string mutation = "none";   // test-only: --mutation (hidden)
 };
 
 // One unit of output: a program alone, or a pair.
@@ -66,6 +69,10 @@ Destination Place(const TranslateCommandOptions& options, const Job& job, bool s
     } else {
       fs::path p(options.output);
       std::string ext = p.extension().string();
+      if (ext == ".spv" || ext == ".hlsl" || ext == ".metal") {
+        p = p.parent_path() / p.stem();  // a.vert.spv: a.vert
+        ext = p.extension().string();
+      }
       d.base = (ext == ".vert" || ext == ".frag" || ext == ".glsl" || ext == ".vs" || ext == ".fs")
                    ? (p.parent_path() / p.stem()).string()
                    : options.output;
@@ -84,7 +91,8 @@ Destination Place(const TranslateCommandOptions& options, const Job& job, bool s
 std::string ShaderPath(const TranslateCommandOptions& options, const Destination& d, bool several,
                        const Job& job, bool vertex) {
   if (!several && !(job.vertex && job.fragment)) return options.output;
-  return d.base + (vertex ? ".vert" : ".frag");
+  return d.base + (vertex ? ".vert" : ".frag") +
+         std::string(LookupOutputTarget(options.target)->extension);
 }
 
 Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool several) {
@@ -94,11 +102,28 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
   arbvp::Mutation mutation = arbvp::Mutation::None;
   arbvp::LookupMutation(options.mutation, &mutation);  // RunTranslate checked the name
   emit = arbvp::WithMutation(emit, mutation);
-  runtime::CheckedTranslation t =
-      runtime::TranslateChecked(job.vertex ? job.vertex->checked.program.get() : nullptr,
-                                job.fragment ? job.fragment->checked.program.get() : nullptr, emit,
-                                job.vertex ? job.vertex->source.get() : nullptr,
-                                job.fragment ? job.fragment->source.get() : nullptr);
+  if (options.state == "uniforms") emit.state = arbvp::StateSource::Uniforms;
+  const OutputTarget& target = *LookupOutputTarget(options.target);
+  const bool self_check = target.dialect == arbvp::EmitTarget::Glsl110;
+  runtime::CheckedTranslation t;
+  if (!self_check) {
+    TargetTranslation tt =
+        TranslateForTarget(target, job.vertex ? job.vertex->checked.program.get() : nullptr,
+                           job.fragment ? job.fragment->checked.program.get() : nullptr, emit,
+                           job.vertex ? job.vertex->source.get() : nullptr,
+                           job.fragment ? job.fragment->source.get() : nullptr);
+    t.ok = tt.ok;
+    t.refused = tt.refused;
+    t.error = std::move(tt.error);
+    t.vertex = std::move(tt.vertex);
+    t.fragment = std::move(tt.fragment);
+    t.bindings = std::move(tt.bindings);
+  } else {
+    t = runtime::TranslateChecked(job.vertex ? job.vertex->checked.program.get() : nullptr,
+                                  job.fragment ? job.fragment->checked.program.get() : nullptr,
+                                  emit, job.vertex ? job.vertex->source.get() : nullptr,
+                                  job.fragment ? job.fragment->source.get() : nullptr);
+  }
   std::string name = job.vertex && job.fragment
                          ? job.vertex->input.display_path + " + " + job.fragment->input.display_path
                      : job.vertex ? job.vertex->input.display_path
@@ -110,10 +135,10 @@ Outcome RunJob(const TranslateCommandOptions& options, const Job& job, bool seve
   }
   if (!t.ok) {
     outcome.err = fmt::format(
-        "arbiter: internal error: the translation of {} is not valid GLSL 1.10 ({}); "
+        "arbiter: internal error: the translation of {} is not valid {} ({}); "
         "nothing was written. This is a bug in arbiter's translator: please report it "
         "with the program.\n",
-        name, t.error);
+        name, self_check ? "GLSL 1.10" : "--target " + options.target, t.error);
     outcome.exit = Exit::Environment;
     return outcome;
   }
@@ -148,6 +173,31 @@ int RunTranslate(const TranslateCommandOptions& options) {
   arbvp::Mutation mutation;
   if (!arbvp::LookupMutation(options.mutation, &mutation)) {
     fmt::print(stderr, "arbiter: error: unknown mutation '{}'\n", options.mutation);
+    return static_cast<int>(Exit::Usage);
+  }
+  const OutputTarget* target = LookupOutputTarget(options.target);
+  if (!target) {
+    fmt::print(stderr, "arbiter: error: unknown target '{}' (one of {})\n", options.target,
+               OutputTargetNames());
+    return static_cast<int>(Exit::Usage);
+  }
+  if (!options.state.empty() && options.state != "builtins" && options.state != "uniforms") {
+    fmt::print(stderr, "arbiter: error: --state takes builtins or uniforms, not '{}'\n",
+               options.state);
+    return static_cast<int>(Exit::Usage);
+  }
+  arbvp::EmitOptions probe;
+  probe.target = target->dialect;
+  if (options.state == "builtins" && arbvp::UsesStateUniforms(probe)) {
+    fmt::print(stderr,
+               "arbiter: error: --target {} has no built-in GL state: --state builtins is only "
+               "for glsl110 and glsl120\n",
+               options.target);
+    return static_cast<int>(Exit::Usage);
+  }
+  if (target->kind == OutputKind::Spirv && options.output.empty()) {
+    fmt::print(stderr,
+               "arbiter: error: --target spirv writes binary modules: give -o FILE or DIR\n");
     return static_cast<int>(Exit::Usage);
   }
   std::vector<LoadedArb> all;
@@ -262,7 +312,8 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
   cmd->footer(
       "One input: GLSL to stdout or to -o FILE. Several inputs: -o DIR gets NAME.vert / "
       "NAME.frag per program (and --bindings DIR NAME.vert.bindings.json / "
-      "NAME.frag.bindings.json). --pair translates a vertex and a fragment program into one GLSL "
+      "NAME.frag.bindings.json); --target spirv, hlsl and msl add .spv, .hlsl and .metal. --pair "
+      "translates a vertex and a fragment program into one GLSL "
       "program with matching varyings (-o BASE writes BASE.vert and BASE.frag). Every "
       "translation is compiled by glslang first; files are written atomically.");
   CommonOptions& common = options->common;
@@ -272,6 +323,12 @@ std::function<int()> AddTranslateCommand(CLI::App* app) {
                   "write the binding map (uniforms, attributes, samplers) as JSON to this file "
                   "(or directory, with several programs)");
   cmd->add_flag("--pair", options->pair, "translate a vertex and a fragment program as a pair");
+  cmd->add_option("--target", options->target,
+                  "output: glsl110 (default), glsl120, glsl330, es100, es300, vk450, spirv, hlsl, "
+                  "msl");
+  cmd->add_option("--state", options->state,
+                  "GL state from GLSL built-ins (builtins, glsl110/glsl120 only) or named uniforms "
+                  "(uniforms, forced for the other targets)");
   cmd->add_flag("--no-comments", options->no_comments,
                 "do not precede statements with the ARB instruction");
   AddStageOption(cmd, &common.stage, /*glsl=*/false);

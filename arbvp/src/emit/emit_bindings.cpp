@@ -69,7 +69,7 @@ std::string_view ModifierSuffix(MatrixModifier m) {
 Expr MatrixRow(Context& ctx, const Binding& b) {
   bool swap = ctx.Mutated(Mutation::MatrixRowsColumns);
   int r = b.row;
-  std::string builtin = BuiltinMatrix(b);
+  std::string builtin = ctx.uniforms ? "" : BuiltinMatrix(b);
   if (!builtin.empty()) {
     // The built-in whose column r is the wanted row: transpose of (M with modifier).
     MatrixModifier column_of = MatrixModifier::None;
@@ -142,6 +142,7 @@ std::string StatePattern(std::string_view pattern, const Binding& b) {
 // parts ("xyz|w", "x|y|z|w") so that reading a component stays short.
 Expr ReadState(Context& ctx, const Binding& b) {
   if (b.state == StateItem::MatrixRow) return MatrixRow(ctx, b);
+  if (ctx.uniforms) return ReadStateUniform(ctx, b);
   if (b.state == StateItem::ClipPlane && b.index >= kGlslClipPlanes) {
     return StateUniformVec4(ctx, b, fmt::format("arb_clip_plane{}", b.index));
   }
@@ -160,6 +161,7 @@ Expr ReadState(Context& ctx, const Binding& b) {
 }
 
 Expr ReadVertexAttrib(Context& ctx, const Binding& b) {
+  if (ctx.uniforms) return VertexInput(ctx, b);
   const int n = b.index;
   auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
   switch (b.vertex_attrib) {
@@ -190,6 +192,7 @@ Expr ReadVertexAttrib(Context& ctx, const Binding& b) {
 
 Expr ReadFragmentAttrib(Context& ctx, const Binding& b) {
   auto e = [](std::string text) { return Expr{std::move(text), 4, true}; };
+  if (Expr input; ctx.uniforms && FragmentInput(ctx, b, &input)) return input;
   switch (b.fragment_attrib) {
     case FragmentAttrib::Color:
       return e("gl_Color");
@@ -222,6 +225,7 @@ std::string FogColorName(const Context& ctx, int index) {
 // Without ARB_draw_buffers result.color is gl_FragColor (broadcast to every draw buffer);
 // with it, result.color[n] is gl_FragData[n] (result.color is result.color[0]).
 std::string FragColorName(const Context& ctx, int index) {
+  if (ctx.target.outputs) return fmt::format("arb_fragcolor{}", index);
   if (!ctx.program.HasOption(OptionId::DrawBuffers)) return "gl_FragColor";
   return fmt::format("gl_FragData[{}]", index);
 }
@@ -271,6 +275,11 @@ Expr ReadBinding(Context& ctx, const Binding& b) {
 
 DestTarget ResultTarget(Context& ctx, const Binding& b) {
   DestTarget t;
+  if (ctx.uniforms && ResultOutput(ctx, b, &t)) {
+    const std::string name = BindingName(b, ctx.program.kind);
+    ctx.outputs[name] = RegisterMapping{name, t.lvalue, ctx.program.kind};
+    return t;
+  }
   switch (b.result) {
     case ResultReg::Position:
       t.lvalue = "gl_Position";

@@ -11,6 +11,7 @@
 #include "arbiter/arbvp/emit.h"
 #include "arbiter/arbvp/emit_mutation.h"
 #include "arbiter/arbvp/ir.h"
+#include "emit/emit_target.h"
 
 namespace arbiter::arbvp::emit {
 
@@ -56,12 +57,20 @@ struct DestTarget {
 
 struct Context {
   Context(const Program& p, const EmitOptions& o, const compiler::SourceFile* s)
-      : program(p), options(o), source(s), mutation(MutationOf(o)) {}
+      : program(p),
+        options(o),
+        source(s),
+        mutation(MutationOf(o)),
+        target(GetDialectRow(o.target)),
+        uniforms(UsesStateUniforms(o)) {}
 
   const Program& program;
   const EmitOptions& options;
   const compiler::SourceFile* source;
   Mutation mutation;
+  // The dialect (emit_targets.def) and whether state is read from uniforms (state_uniforms.cpp).
+  const DialectRow& target;
+  bool uniforms;
 
   bool Mutated(Mutation m) const { return mutation == m; }
   bool IsVertex() const { return program.kind == ProgramKind::Vertex; }
@@ -95,7 +104,16 @@ struct Context {
   std::set<int> clip_distances;              // result.clip[n] written
   bool needs_texture_lod = false;            // GL_ARB_shader_texture_lod functions used
   FlowMode flow = FlowMode::Straight;
-  int pc = 0;                   // the index of the instruction being emitted
+  int pc = 0;  // the index of the instruction being emitted
+  // State as uniforms: the varyings a shader declares (vertex outputs, fragment inputs), name
+  // -> type; the vertex colour outputs written (clamped at the end of main, as GL clamps
+  // result.color); pair translation: the fragment inputs the vertex shader declares too.
+  std::map<std::string, std::string> varyings;
+  std::set<std::string> vertex_colors;
+  std::map<std::string, std::string> pair_varyings;
+  // Vulkan: the std140 offsets of the uniform block's members, and its size.
+  std::map<std::string, int> block_offsets;
+  int block_size = 0;
   std::vector<int> open_loops;  // Structured: the open LOOP blocks' numbers (A0.x: arb_a0_N)
   int loops = 0;                // Structured: LOOP and REP blocks so far
 };

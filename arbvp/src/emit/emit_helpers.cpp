@@ -221,6 +221,18 @@ std::string RelativeReaderName(const Context& ctx, int var) {
 std::string RelativeReaderText(const Context& ctx, int var) {
   std::string name = ctx.var_names[static_cast<size_t>(var)];
   int size = static_cast<int>(ctx.program.vars[static_cast<size_t>(var)].bindings.size());
+  if (ctx.target.id == EmitTarget::Es100) {
+    // ES 1.00 indexes arrays other than uniforms by constant index expressions only
+    // (Appendix A.5): one test per element.
+    std::string tests;
+    for (int i = 0; i < size; ++i) {
+      tests += fmt::format("  if (arb_i == {0}) return {1}[{0}];\n", i, name);
+    }
+    return fmt::format(
+        "// {0}[A0.x + k]: a read outside {0}[0..{2}] gives vec4(0.0) (undefined in ARB).\n"
+        "vec4 {1}(int arb_i) {{\n{3}  return vec4(0.0);\n}}\n",
+        name, RelativeReaderName(ctx, var), size - 1, tests);
+  }
   return fmt::format(
       "// {0}[A0.x + k]: a read outside {0}[0..{2}] gives vec4(0.0) (undefined in ARB).\n"
       "vec4 {1}(int arb_i) {{\n"

@@ -30,27 +30,27 @@ std::string Indent(const std::string& lines) {
 // alpha clamped, f clamped to [0, 1], c = fragment.fogcoord.x and Cf the fog colour
 // (clamped, as GL clamps it when it is specified). With ARB_draw_buffers every
 // result.color[n] is fogged, as the reference interpreter does.
-std::string FogEpilogue(const Context& ctx) {
-  std::string c = "gl_FogFragCoord";
+std::string FogEpilogue(Context& ctx) {
+  const std::string c = FogField(ctx, "coord");
+  const std::string start = FogField(ctx, "start");
+  const std::string end = FogField(ctx, "end");
+  const std::string density = FogField(ctx, "density");
+  const std::string fog_color = FogField(ctx, "color");
   std::string out;
   if (ctx.program.HasOption(OptionId::FogLinear)) {
-    out += "// OPTION ARB_fog_linear: f = (end - c) / (end - start), c = gl_FogFragCoord\n";
+    out += fmt::format("// OPTION ARB_fog_linear: f = (end - c) / (end - start), c = {}\n", c);
     out += ctx.Mutated(Mutation::FogLinearStartEnd)
-               ? fmt::format(
-                     "float arb_fog = clamp((gl_Fog.start - {}) / (gl_Fog.start - gl_Fog.end), "
-                     "0.0, 1.0);\n",
-                     c)
-               : fmt::format(
-                     "float arb_fog = clamp((gl_Fog.end - {}) / (gl_Fog.end - gl_Fog.start), "
-                     "0.0, 1.0);\n",
-                     c);
+               ? fmt::format("float arb_fog = clamp(({0} - {1}) / ({0} - {2}), 0.0, 1.0);\n", start,
+                             c, end)
+               : fmt::format("float arb_fog = clamp(({0} - {1}) / ({0} - {2}), 0.0, 1.0);\n", end,
+                             c, start);
   } else if (ctx.program.HasOption(OptionId::FogExp) && !ctx.Mutated(Mutation::FogExpAsExp2)) {
-    out += "// OPTION ARB_fog_exp: f = exp(-density * c), c = gl_FogFragCoord\n";
-    out += fmt::format("float arb_fog = clamp(exp(-(gl_Fog.density * {})), 0.0, 1.0);\n", c);
+    out += fmt::format("// OPTION ARB_fog_exp: f = exp(-density * c), c = {}\n", c);
+    out += fmt::format("float arb_fog = clamp(exp(-({} * {})), 0.0, 1.0);\n", density, c);
   } else {
-    out += fmt::format("// OPTION {}: f = exp(-(density * c)^2), c = gl_FogFragCoord\n",
-                       ctx.program.HasOption(OptionId::FogExp) ? "ARB_fog_exp" : "ARB_fog_exp2");
-    out += fmt::format("float arb_fog_dc = gl_Fog.density * {};\n", c);
+    out += fmt::format("// OPTION {}: f = exp(-(density * c)^2), c = {}\n",
+                       ctx.program.HasOption(OptionId::FogExp) ? "ARB_fog_exp" : "ARB_fog_exp2", c);
+    out += fmt::format("float arb_fog_dc = {} * {};\n", density, c);
     out += "float arb_fog = clamp(exp(-(arb_fog_dc * arb_fog_dc)), 0.0, 1.0);\n";
   }
   for (int n : ctx.fog_colors) {
@@ -59,8 +59,8 @@ std::string FogEpilogue(const Context& ctx) {
                           ? color + ".rgb"
                           : fmt::format("clamp({}.rgb, 0.0, 1.0)", color);
     out += fmt::format(
-        "{} = vec4(mix(clamp(gl_Fog.color.rgb, 0.0, 1.0), {}, arb_fog), clamp({}.a, 0.0, 1.0));\n",
-        FragColorName(ctx, n), rgb, color);
+        "{} = vec4(mix(clamp({}.rgb, 0.0, 1.0), {}, arb_fog), clamp({}.a, 0.0, 1.0));\n",
+        FragColorName(ctx, n), fog_color, rgb, color);
   }
   return out;
 }
@@ -95,6 +95,10 @@ std::string EmitShader(Context& ctx) {
   if (ctx.fog_redirect) {
     if (!body.empty()) body += '\n';
     body += FogEpilogue(ctx);
+  }
+  if (ctx.uniforms && !ctx.vertex_colors.empty()) {
+    if (!body.empty()) body += '\n';
+    body += UniformsEpilogue(ctx);
   }
 
   std::string locals;
@@ -133,7 +137,12 @@ std::string EmitShader(Context& ctx) {
     readers += '\n';
     readers += RelativeReaderText(ctx, static_cast<int>(i));
   }
-  if (p.HasOption(OptionId::PositionInvariant)) {
+  if (p.HasOption(OptionId::PositionInvariant) && ctx.uniforms) {
+    // No ftransform() and no gl_ClipVertex without the built-in state.
+    locals += InvariantPosition(ctx);
+    ctx.outputs["result.position"] =
+        RegisterMapping{"result.position", "gl_Position", ProgramKind::Vertex};
+  } else if (p.HasOption(OptionId::PositionInvariant)) {
     locals += "gl_Position = ftransform();  // OPTION ARB_position_invariant\n";
     // Clipping against user planes happens in eye space as without a program; GLSL 1.10
     // leaves it undefined unless gl_ClipVertex is written (7.1).
@@ -147,13 +156,18 @@ std::string EmitShader(Context& ctx) {
         "undefined in ARB\n";
   }
 
-  std::string out = "#version 110\n";
-  if (ctx.needs_rect) out += "#extension GL_ARB_texture_rectangle : require\n";
-  if (ctx.needs_texture_lod) out += "#extension GL_ARB_shader_texture_lod : require\n";
+  std::string out = std::string(ctx.target.version) + "\n";
+  if (ctx.needs_rect && !ctx.target.modern) {
+    out += "#extension GL_ARB_texture_rectangle : require\n";
+  }
+  if (ctx.needs_texture_lod && ctx.target.fragment_lod == "ext") {
+    out += "#extension GL_ARB_shader_texture_lod : require\n";
+  }
   const std::string frag_coord = FragCoordLayout(p);
   if (!frag_coord.empty()) out += "#extension GL_ARB_fragment_coord_conventions : require\n";
-  out += fmt::format("// ARB {} program translated to GLSL 1.10 by arbiter.\n",
-                     ctx.IsVertex() ? "vertex" : "fragment");
+  out += fmt::format("// ARB {} program translated to {} by arbiter{}.\n",
+                     ctx.IsVertex() ? "vertex" : "fragment", ctx.target.title,
+                     ctx.uniforms && !ctx.target.uniforms ? " (state as uniforms)" : "");
   if (std::string_view hint = PrecisionNote(p); !hint.empty()) {
     out += fmt::format("// OPTION {}: a hint, nothing to translate.\n", hint);
   }
@@ -162,11 +176,15 @@ std::string EmitShader(Context& ctx) {
   }
 
   std::string decls = frag_coord;
-  if (ctx.texcoord_declared > 0) {
+  if (ctx.uniforms) {
+    decls += UniformsDeclarations(ctx);
+  } else if (ctx.texcoord_declared > 0) {
     decls += fmt::format("varying vec4 gl_TexCoord[{}];\n", ctx.texcoord_declared);
   }
   std::vector<AttributeBinding> attribs;
-  for (const auto& [name, a] : ctx.attribs) attribs.push_back(a);
+  for (const auto& [name, a] : ctx.attribs) {
+    if (!ctx.uniforms) attribs.push_back(a);
+  }
   std::stable_sort(attribs.begin(), attribs.end(), [](const auto& a, const auto& b) {
     return (a.location < 0 ? 99 : a.location) < (b.location < 0 ? 99 : b.location);
   });
@@ -176,18 +194,21 @@ std::string EmitShader(Context& ctx) {
   }
   for (bool local : {false, true}) {
     int size = local ? ctx.local_size : ctx.env_size;
-    if (size == 0) continue;
+    if (size == 0 || ctx.uniforms) continue;
     decls += fmt::format("uniform vec4 {}[{}];  // program.{}[{}]\n", EnvName(ctx, local), size,
                          local ? "local" : "env", size == 1 ? "0" : fmt::format("0..{}", size - 1));
   }
   for (const auto& [name, s] : ctx.state) {
+    if (ctx.uniforms) break;
     decls += fmt::format("uniform {} {};  // {}\n", s.type, name, s.binding);
   }
   for (const auto& [unit, target] : ctx.samplers) {
+    if (ctx.uniforms) break;
     decls += fmt::format("uniform {} {};  // texture[{}], {}\n", SamplerType(target),
                          SamplerName(unit), unit, TexTargetName(target));
   }
   for (int n : ctx.clip_distances) {
+    if (ctx.uniforms) break;
     decls += fmt::format(
         "varying float arb_clip_distance{};  // result.clip[{}]: GLSL 1.10 has no clip distances\n",
         n, n);
@@ -207,7 +228,7 @@ std::string EmitShader(Context& ctx) {
   if (!locals.empty() && !body.empty()) out += "\n";
   out += Indent(body);
   out += "}\n";
-  return out;
+  return FinishForTarget(ctx, std::move(out));
 }
 
 BindingMap MakeBindingMap(const Context& ctx) {
@@ -223,11 +244,33 @@ BindingMap MakeBindingMap(const Context& ctx) {
     map.parameters.push_back({EnvName(ctx, true), ctx.program.kind, true, ctx.local_size});
   }
   for (const auto& [unit, target] : ctx.samplers) {
-    map.samplers.push_back({SamplerName(unit), unit, target, SamplerType(target)});
+    map.samplers.push_back(
+        {SamplerName(unit), unit, target, SamplerType(target), SamplerBindingOf(ctx, unit)});
   }
   for (const auto& [name, s] : ctx.state) map.state.push_back(s);
   for (const auto& [name, r] : ctx.inputs) map.inputs.push_back(r);
   for (const auto& [name, r] : ctx.outputs) map.outputs.push_back(r);
+  map.target = std::string(ctx.target.spelling);
+  map.state_uniforms = ctx.uniforms;
+  if (!ctx.block_offsets.empty()) {
+    map.blocks.push_back({ctx.IsVertex() ? "ArbVertexUniforms" : "ArbFragmentUniforms",
+                          ctx.program.kind, 0, BlockBindingOf(ctx), ctx.block_size});
+    for (ParameterArray& a : map.parameters) a.offset = ctx.block_offsets.at(a.name);
+    for (StateUniform& s : map.state) {
+      s.offset = ctx.block_offsets.at(s.name);
+      s.block = map.blocks.back().name;
+    }
+  }
+  if (ctx.target.block) {
+    for (auto* list : {&map.inputs, &map.outputs}) {
+      for (RegisterMapping& r : *list) {
+        const std::string name = r.glsl.substr(0, r.glsl.find_first_of(".["));
+        if (ctx.varyings.count(name) || name.rfind("arb_clip_distance", 0) == 0) {
+          r.location = VaryingLocation(name);
+        }
+      }
+    }
+  }
   map.mutation = std::string(MutationName(ctx.mutation));
   return map;
 }
@@ -250,17 +293,22 @@ PairTranslation EmitGlslPair(const Program& vertex, const Program& fragment,
   // A first pass finds how many gl_TexCoord elements each side uses; both shaders then
   // declare the array with the same size, so the linked varyings match.
   int texcoords = 0;
+  std::map<std::string, std::string> fragment_inputs;
   {
     emit::Context v(vertex, options, vertex_source);
     emit::Context f(fragment, options, fragment_source);
     (void)emit::EmitShader(v);
     (void)emit::EmitShader(f);
     texcoords = std::max(v.texcoord_size, f.texcoord_size);
+    fragment_inputs = f.varyings;
   }
   emit::Context v(vertex, options, vertex_source);
   emit::Context f(fragment, options, fragment_source);
   v.texcoord_declared = texcoords;
   f.texcoord_declared = texcoords;
+  // State as uniforms: the vertex shader declares the fragment shader's inputs too (a used
+  // fragment input without a vertex output does not link in GLSL 1.30 and ES).
+  if (v.uniforms) v.pair_varyings = fragment_inputs;
   PairTranslation pair;
   pair.vertex = emit::EmitShader(v);
   pair.fragment = emit::EmitShader(f);
@@ -271,9 +319,11 @@ PairTranslation EmitGlslPair(const Program& vertex, const Program& fragment,
   m.attributes.insert(m.attributes.end(), fm.attributes.begin(), fm.attributes.end());
   m.parameters.insert(m.parameters.end(), fm.parameters.begin(), fm.parameters.end());
   m.samplers.insert(m.samplers.end(), fm.samplers.begin(), fm.samplers.end());
+  m.blocks.insert(m.blocks.end(), fm.blocks.begin(), fm.blocks.end());
   for (const StateUniform& s : fm.state) {
-    bool seen = std::any_of(m.state.begin(), m.state.end(),
-                            [&](const StateUniform& x) { return x.name == s.name; });
+    bool seen = std::any_of(m.state.begin(), m.state.end(), [&](const StateUniform& x) {
+      return x.name == s.name && x.block == s.block;
+    });
     if (!seen) m.state.push_back(s);
   }
   m.inputs.insert(m.inputs.end(), fm.inputs.begin(), fm.inputs.end());

@@ -16,7 +16,24 @@ namespace arbiter::arbvp {
 // Test-only: the translator mutations (arbiter/arbvp/emit_mutation.h).
 enum class Mutation : uint8_t;
 
+// The GLSL dialect of the output (emit_targets.def; docs/guide/translate.md "Targets").
+enum class EmitTarget : uint8_t {
+#define ARBVP_EMIT_TARGET(name, ...) name,
+#include "arbiter/arbvp/emit_targets.def"
+#undef ARBVP_EMIT_TARGET
+};
+// The --target spelling ("glsl330"); LookupEmitTarget reads it back.
+std::string_view EmitTargetName(EmitTarget target);
+bool LookupEmitTarget(std::string_view name, EmitTarget* target);
+
+// Where GL state comes from: GLSL 1.10 built-ins (gl_ModelViewMatrix, gl_Vertex, gl_TexCoord),
+// or named uniforms, attributes with locations and named varyings (forced for the targets
+// without built-in state).
+enum class StateSource : uint8_t { Builtins, Uniforms };
+
 struct EmitOptions {
+  EmitTarget target = EmitTarget::Glsl110;
+  StateSource state = StateSource::Builtins;
   // Precede each statement with the ARB instruction it translates, as a `//` comment (the
   // instruction's source text when a SourceFile is given).
   bool comments = true;
@@ -27,6 +44,9 @@ struct EmitOptions {
   friend EmitOptions WithMutation(EmitOptions options, Mutation mutation);
   friend Mutation MutationOf(const EmitOptions& options);
 };
+
+// Whether the translation reads state from uniforms (options.state, or forced by the target).
+bool UsesStateUniforms(const EmitOptions& options);
 
 // ---------------------------------------------------------------------------------------
 // The binding map: what the host must feed to the translated shader(s).
@@ -44,6 +64,7 @@ struct ParameterArray {
   ProgramKind target = ProgramKind::Vertex;
   bool local = false;  // program.local (else program.env)
   int size = 0;        // element i = program.{env,local}[i]
+  int offset = -1;     // in a uniform block: the std140 byte offset (array stride 16)
 };
 
 // A sampler uniform for one texture unit.
@@ -52,6 +73,7 @@ struct SamplerBinding {
   int unit = 0;
   TexTarget target = TexTarget::Tex2D;
   std::string type;  // GLSL sampler type ("sampler2D")
+  int binding = -1;  // Vulkan: the descriptor binding in set 0 (-1: none)
 };
 
 // A uniform standing for GL state that GLSL 1.10 has no built-in for (program matrices,
@@ -60,6 +82,17 @@ struct StateUniform {
   std::string name;     // "arb_matrix_program0"
   std::string type;     // "mat4" (column-major, as glUniformMatrix4fv without transpose) or "vec4"
   std::string binding;  // ARB spelling of the state ("state.matrix.program[0].inverse")
+  int offset = -1;      // in a uniform block: the std140 byte offset (-1: a plain uniform)
+  std::string block = "";  // the UniformBlock holding it ("" for a plain uniform)
+};
+
+// Vulkan: the std140 uniform block (set 0) holding a stage's parameters and state.
+struct UniformBlock {
+  std::string name;  // "ArbVertexUniforms"
+  ProgramKind stage = ProgramKind::Vertex;
+  int set = 0;
+  int binding = 0;
+  int size = 0;  // bytes
 };
 
 // How an ARB register maps onto GLSL (read registers and written results).
@@ -67,9 +100,13 @@ struct RegisterMapping {
   std::string binding;  // ARB spelling ("result.fogcoord", "fragment.texcoord[1]")
   std::string glsl;     // GLSL expression ("gl_FogFragCoord", "gl_TexCoord[1]")
   ProgramKind stage = ProgramKind::Vertex;
+  int location = -1;  // Vulkan: the varying's location (-1: matched by name)
 };
 
 struct BindingMap {
+  std::string target = "glsl110";  // EmitTargetName
+  bool state_uniforms = false;     // state as uniforms (else GLSL 1.10 built-ins)
+  std::vector<UniformBlock> blocks;
   std::vector<AttributeBinding> attributes;
   std::vector<ParameterArray> parameters;
   std::vector<SamplerBinding> samplers;
@@ -99,6 +136,9 @@ struct Untranslatable {
   Range range;       // the instruction
 };
 Untranslatable FindUntranslatable(const Program& program);
+// The same for options.target, whose dialect may lack more (1D and RECT textures in ES, ...):
+// `what` then names the construct and the target.
+Untranslatable FindUntranslatable(const Program& program, const EmitOptions& options);
 
 struct Translation {
   std::string glsl;  // a vertex shader for a vertex program, a fragment shader otherwise

@@ -1,0 +1,334 @@
+// The GLSL dialects (emit_targets.def): the table, what each refuses (FindUntranslatable),
+// and the final pass that turns the GLSL 1.10 text the other files write into the dialect's
+// (lookup function names, the fragment depth of ES 1.00, extensions and precision).
+#include "emit/emit_target.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <iterator>
+
+#include "arbiter/arbvp/emit.h"
+#include "emit/emit_context.h"
+
+namespace arbiter::arbvp {
+namespace emit {
+namespace {
+
+constexpr DialectRow kTargetRows[] = {
+#define ARBVP_EMIT_TARGET(name, spelling, version, title, es, uniforms, attribute, vertex_out,    \
+                          fragment_in, modern, outputs, locations, block, tex1d, rect, tex3d,     \
+                          shadow, shadow1d, fragment_lod, draw_buffers, loops, coord_conventions, \
+                          frag_position)                                                          \
+  {EmitTarget::name,                                                                              \
+   spelling,                                                                                      \
+   version,                                                                                       \
+   title,                                                                                         \
+   es,                                                                                            \
+   uniforms,                                                                                      \
+   attribute,                                                                                     \
+   vertex_out,                                                                                    \
+   fragment_in,                                                                                   \
+   modern,                                                                                        \
+   outputs,                                                                                       \
+   locations,                                                                                     \
+   block,                                                                                         \
+   tex1d,                                                                                         \
+   rect,                                                                                          \
+   tex3d,                                                                                         \
+   shadow,                                                                                        \
+   shadow1d,                                                                                      \
+   fragment_lod,                                                                                  \
+   draw_buffers,                                                                                  \
+   loops,                                                                                         \
+   coord_conventions,                                                                             \
+   frag_position},
+#include "arbiter/arbvp/emit_targets.def"
+#undef ARBVP_EMIT_TARGET
+};
+
+bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The GLSL 1.30 overload for a GLSL 1.10 lookup function ("texture2DProjLod" ->
+// "textureProjLod"), and whether it is a shadow lookup; "" for other identifiers.
+std::string ModernLookup(std::string_view name, bool* shadow) {
+  static constexpr std::string_view kBases[] = {"texture2DRect", "shadow2DRect", "texture1D",
+                                                "texture2D",     "texture3D",    "textureCube",
+                                                "shadow1D",      "shadow2D"};
+  for (std::string_view base : kBases) {
+    if (name.substr(0, base.size()) != base) continue;
+    std::string_view rest = name.substr(base.size());
+    if (rest.size() >= 3 && rest.substr(rest.size() - 3) == "ARB") {
+      rest.remove_suffix(3);  // textureGradARB: textureGrad
+    }
+    static constexpr std::string_view kForms[] = {"", "Proj", "Lod", "ProjLod", "Grad", "ProjGrad"};
+    if (std::find(std::begin(kForms), std::end(kForms), rest) == std::end(kForms)) continue;
+    *shadow = base.substr(0, 6) == "shadow";
+    return "texture" + std::string(rest);
+  }
+  return "";
+}
+
+// `text` with each identifier `f` replaced by what `replace` returns ("" keeps it); `//`
+// comments are copied as they are.
+template <typename F>
+std::string ReplaceIdentifiers(const std::string& text, F replace) {
+  std::string out;
+  out.reserve(text.size() + 64);
+  size_t i = 0;
+  while (i < text.size()) {
+    if (text.compare(i, 2, "//") == 0) {
+      size_t end = text.find('\n', i);
+      if (end == std::string::npos) end = text.size();
+      out.append(text, i, end - i);
+      i = end;
+      continue;
+    }
+    if (!IsIdentChar(text[i]) || (i > 0 && IsIdentChar(text[i - 1]))) {
+      out.push_back(text[i++]);
+      continue;
+    }
+    size_t end = i;
+    while (end < text.size() && IsIdentChar(text[end])) ++end;
+    const std::string word = text.substr(i, end - i);
+    i = end;
+    out += replace(word, text, &i);
+  }
+  return out;
+}
+
+// The GLSL 1.30 lookups: texture2D(...) -> texture(...); a shadow lookup returns a float
+// there and a vec4 (r, r, r, 1) in GLSL 1.10 (DEPTH_TEXTURE_MODE LUMINANCE, GL's default,
+// which the reference interpreter assumes): shadow2D(...) -> arb_shadow(texture(...)).
+std::string ModernLookups(const std::string& text, bool* used_shadow) {
+  return ReplaceIdentifiers(
+      text, [&](const std::string& word, const std::string& all, size_t* at) -> std::string {
+        bool shadow = false;
+        std::string modern = ModernLookup(word, &shadow);
+        if (modern.empty() || *at >= all.size() || all[*at] != '(') return word;
+        if (!shadow) return modern;
+        // Copy the arguments up to the matching parenthesis, rewritten themselves.
+        size_t depth = 0;
+        size_t end = *at;
+        for (; end < all.size(); ++end) {
+          if (all[end] == '(') ++depth;
+          if (all[end] == ')' && --depth == 0) break;
+        }
+        std::string args = ModernLookups(all.substr(*at, end + 1 - *at), used_shadow);
+        *at = end + 1;
+        *used_shadow = true;
+        return "arb_shadow(" + modern + args + ")";
+      });
+}
+
+bool HasIdentifier(const std::string& text, std::string_view name) {
+  bool found = false;
+  (void)ReplaceIdentifiers(text, [&](const std::string& word, const std::string&, size_t*) {
+    if (word == name) found = true;
+    return word;
+  });
+  return found;
+}
+
+// Whether `text` calls a GLSL 1.10 lookup at an explicit level (texture2DLod, ...).
+bool UsesLodLookup(const std::string& text) {
+  bool found = false;
+  (void)ReplaceIdentifiers(text, [&](const std::string& word, const std::string&, size_t*) {
+    bool shadow = false;
+    if (word.find("Lod") != std::string::npos && !ModernLookup(word, &shadow).empty()) {
+      found = true;
+    }
+    return word;
+  });
+  return found;
+}
+
+}  // namespace
+
+const DialectRow& GetDialectRow(EmitTarget target) {
+  return kTargetRows[static_cast<size_t>(target)];
+}
+
+std::string FinishForTarget(const Context& ctx, std::string text) {
+  const DialectRow& row = ctx.target;
+  if (row.id == EmitTarget::Glsl110) return text;
+  std::string extensions;
+  if (row.id == EmitTarget::Glsl120 && ctx.IsVertex() && !ctx.needs_texture_lod &&
+      UsesLodLookup(text)) {
+    // GLSL 1.20 has the Lod lookups in vertex shaders; glslang asks for the extension that
+    // brought them to fragment shaders too. `enable` does not fail without it.
+    extensions += "#extension GL_ARB_shader_texture_lod : enable\n";
+  }
+  if (row.modern) {
+    bool shadow = false;
+    text = ModernLookups(text, &shadow);
+    if (shadow) {
+      const size_t main = text.find("\nvoid main() {\n");
+      text.insert(main + 1,
+                  "// A shadow lookup as GLSL 1.10's: (r, r, r, 1), DEPTH_TEXTURE_MODE LUMINANCE.\n"
+                  "vec4 arb_shadow(float r) {\n"
+                  "  return vec4(r, r, r, 1.0);\n"
+                  "}\n\n");
+    }
+  }
+  if (row.id == EmitTarget::Es100 && !ctx.IsVertex()) {
+    if (HasIdentifier(text, "gl_FragDepth")) {
+      text = ReplaceIdentifiers(text, [](const std::string& word, const std::string&, size_t*) {
+        return word == "gl_FragDepth" ? std::string("gl_FragDepthEXT") : word;
+      });
+      extensions += "#extension GL_EXT_frag_depth : require\n";
+    }
+    if (HasIdentifier(text, "dFdx") || HasIdentifier(text, "dFdy") ||
+        HasIdentifier(text, "fwidth")) {
+      extensions += "#extension GL_OES_standard_derivatives : require\n";
+    }
+  }
+  const size_t first_line = text.find('\n') + 1;
+  text.insert(first_line, extensions);
+  if (row.es) {
+    // Exact ARB arithmetic needs IEEE single precision: highp float and int. ES 1.00 fragment
+    // shaders have highp only where GL_FRAGMENT_PRECISION_HIGH is defined; without it the
+    // translation does not compile rather than run at a lower precision.
+    std::string precision = "precision highp float;\nprecision highp int;\n";
+    if (row.id == EmitTarget::Es100 && !ctx.IsVertex()) {
+      precision =
+          "#ifdef GL_FRAGMENT_PRECISION_HIGH\n" + precision +
+          "#else\n#error \"arbiter: exact ARB arithmetic needs highp floats in fragment shaders\"\n"
+          "#endif\n";
+    }
+    // After the header lines (#version, #extension, the leading comments).
+    size_t blank = text.find("\n\n");
+    if (blank == std::string::npos) blank = text.size() - 1;
+    text.insert(blank + 1, "\n" + precision);
+  }
+  return text;
+}
+
+}  // namespace emit
+
+std::string_view EmitTargetName(EmitTarget target) { return emit::GetDialectRow(target).spelling; }
+
+bool LookupEmitTarget(std::string_view name, EmitTarget* target) {
+  for (const emit::DialectRow& row : emit::kTargetRows) {
+    if (row.spelling != name) continue;
+    *target = row.id;
+    return true;
+  }
+  return false;
+}
+
+bool UsesStateUniforms(const EmitOptions& options) {
+  return options.state == StateSource::Uniforms || emit::GetDialectRow(options.target).uniforms;
+}
+
+namespace {
+
+bool IsFragPosition(const Binding& b) {
+  return b.kind == BindingKind::FragmentAttrib && b.fragment_attrib == FragmentAttrib::Position;
+}
+
+bool IsExtraColor(const Binding& b) {
+  return b.kind == BindingKind::Result && b.result == ResultReg::FragColor && b.index > 0;
+}
+
+// The first binding of variable `var` that `test` holds for.
+template <typename F>
+bool AnyBinding(const Program& p, int var, F test) {
+  if (var < 0 || static_cast<size_t>(var) >= p.vars.size()) return false;
+  const std::vector<Binding>& bindings = p.vars[static_cast<size_t>(var)].bindings;
+  return std::any_of(bindings.begin(), bindings.end(), test);
+}
+
+// "<construct>: <dialect> has <what it lacks>".
+std::string Refusal(const emit::DialectRow& row, std::string_view construct, std::string_view has) {
+  return fmt::format("{}: {} has {}", construct, row.title, has);
+}
+
+}  // namespace
+
+Untranslatable FindUntranslatable(const Program& program, const EmitOptions& options) {
+  Untranslatable base = FindUntranslatable(program);
+  const emit::DialectRow& row = emit::GetDialectRow(options.target);
+  if (row.id == EmitTarget::Glsl110) return base;
+  if (!base.what.empty()) {
+    // The emitter forms no float bits on any target yet (GLSL 3.30 and ES 3.00 could).
+    const std::string op = base.what.substr(0, base.what.find(' '));
+    return {fmt::format("{} needs the bits of a float, which arbiter's {} translation does not "
+                        "form yet",
+                        op, row.title),
+            base.range};
+  }
+  for (const Option& o : program.options) {
+    if (!row.coord_conventions &&
+        (o.id == OptionId::OriginUpperLeft || o.id == OptionId::PixelCenterInteger)) {
+      return {Refusal(row, fmt::format("OPTION {}", GetOptionInfo(o.id).spelling),
+                      "no gl_FragCoord layout qualifiers"),
+              o.range};
+    }
+  }
+  const bool fragment = program.kind == ProgramKind::Fragment;
+  for (const Instruction& inst : program.instructions) {
+    const OpcodeInfo& info = GetOpcodeInfo(inst.op);
+    const bool sample =
+        info.signature == OpSignature::Sample || info.signature == OpSignature::TexD;
+    if (sample) {
+      bool has = true;
+      switch (inst.target) {
+        case TexTarget::Tex1D:
+          has = row.tex1d;
+          break;
+        case TexTarget::Tex3D:
+          has = row.tex3d;
+          break;
+        case TexTarget::Rect:
+          has = row.rect;
+          break;
+        case TexTarget::Shadow1D:
+          has = row.shadow1d;
+          break;
+        case TexTarget::Shadow2D:
+          has = row.shadow;
+          break;
+        case TexTarget::ShadowRect:
+          has = row.rect && row.shadow;
+          break;
+        default:
+          break;
+      }
+      if (!has) {
+        return {
+            Refusal(row, fmt::format("{} of a {} texture", info.name, TexTargetName(inst.target)),
+                    fmt::format("no {} samplers", TexTargetName(inst.target))),
+            inst.target_range};
+      }
+      const bool level = inst.op == Opcode::TXL || inst.op == Opcode::TXD;
+      if (fragment && level && row.fragment_lod.empty()) {
+        return {Refusal(row, info.name, "no explicit level of detail in fragment shaders"),
+                inst.opcode_range};
+      }
+    }
+    if (!row.loops && info.signature != OpSignature::If && info.klass == OpClass::Flow &&
+        inst.op != Opcode::ELSE && inst.op != Opcode::ENDIF) {
+      return {
+          Refusal(row, info.name, "only for loops with constant bounds (Appendix A), no branches"),
+          inst.opcode_range};
+    }
+    if (!row.draw_buffers && AnyBinding(program, inst.dst.var, IsExtraColor)) {
+      return {Refusal(row, "result.color[n] with n > 0", "one colour output"), inst.dst.range};
+    }
+    if (!row.frag_position) {
+      for (int i = 0; i < inst.src_count; ++i) {
+        const SrcOperand& s = inst.src[static_cast<size_t>(i)];
+        if (AnyBinding(program, s.var, IsFragPosition)) {
+          return {Refusal(row, "fragment.position",
+                          "its window origin at the upper left (ARB counts y from the lower left)"),
+                  s.range};
+        }
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace arbiter::arbvp
