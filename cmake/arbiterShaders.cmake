@@ -2,7 +2,8 @@
 # arbiter_add_program() (at the end): shaders checked together as one program.
 #
 #   arbiter_add_shaders(TARGET <target> SOURCES <files...>
-#                       [TRANSLATE_TO <dir>] [LIMITS <profile>] [WERROR])
+#                       [TRANSLATE_TO <dir>] [TRANSLATE_TARGET <t>] [LIMITS <profile>]
+#                       [WERROR])
 #
 # Adds the custom target <target> (built by ALL) and, for each shader, one custom command
 # whose declared outputs are exactly what it writes, so that Ninja and Make re-run the steps
@@ -15,6 +16,9 @@
 #     <dir>/<name>.vert (a `!!ARBvp1.0` program) or <dir>/<name>.frag (`!!ARBfp1.0`) and its
 #     binding map <dir>/<name>.<vert|frag>.bindings.json (<name>: the file name without its
 #     extension). arbiter writes both atomically and only when the program is accepted.
+#     TRANSLATE_TARGET passes `--target <t>` (glsl110, the default, glsl120, glsl330, es100,
+#     es300, vk450, spirv, hlsl or msl): spirv, hlsl and msl append .spv, .hlsl and .metal to
+#     the shader's name (<dir>/<name>.vert.spv).
 # Every step depends on its shader and on the arbiter executable (a new arbiter re-checks
 # everything); LIMITS (a built-in profile: spec-min, mesa, r300, r500, i915, nv30 or nv40; or
 # a JSON file, which the steps then depend on too) passes --limits, WERROR passes --Werror.
@@ -52,7 +56,7 @@ function(_arbiter_common_flags limits werror flags_var depends_var)
 endfunction()
 
 function(arbiter_add_shaders)
-  cmake_parse_arguments(PARSE_ARGV 0 ARG "WERROR" "TARGET;TRANSLATE_TO;LIMITS" "SOURCES")
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "WERROR" "TARGET;TRANSLATE_TO;TRANSLATE_TARGET;LIMITS" "SOURCES")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "arbiter_add_shaders: unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -98,11 +102,22 @@ function(arbiter_add_shaders)
 
     if(stage)
       set(shader "${translate_dir}/${name}.${glsl_extension}")
+      set(target_flags "")
+      if(ARG_TRANSLATE_TARGET)
+        set(target_flags --target "${ARG_TRANSLATE_TARGET}")
+        if(ARG_TRANSLATE_TARGET STREQUAL "spirv")
+          string(APPEND shader ".spv")
+        elseif(ARG_TRANSLATE_TARGET STREQUAL "hlsl")
+          string(APPEND shader ".hlsl")
+        elseif(ARG_TRANSLATE_TARGET STREQUAL "msl")
+          string(APPEND shader ".metal")
+        endif()
+      endif()
       set(step_outputs "${shader}" "${shader}.bindings.json")
       add_custom_command(
         OUTPUT ${step_outputs}
         COMMAND "${CMAKE_COMMAND}" -E make_directory "${translate_dir}"
-        COMMAND arbiter::arbiter translate --stage ${stage} ${flags}
+        COMMAND arbiter::arbiter translate --stage ${stage} ${flags} ${target_flags}
                 -o "${shader}" --bindings "${shader}.bindings.json" "${path}"
         DEPENDS "${path}" "$<TARGET_FILE:arbiter::arbiter>" ${limits_depends}
         COMMENT "arbiter translate ${relative}"

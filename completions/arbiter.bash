@@ -58,8 +58,16 @@ _arbiter() {
                -D --define -U --undefine -I --include-dir --preamble --warning"
       files="$glsl" formats="text json sarif" ;;
     translate)
-      options="-h --help -o --output --bindings --pair --no-comments --stage --limits --color
-               --error-limit -W --Werror -j --jobs"
+      options="-h --help -o --output --bindings --pair --no-comments --target --state --stage
+               --limits --color --error-limit -W --Werror -j --jobs"
+      case "$prev" in
+        --target)
+          COMPREPLY=($(compgen -W "glsl110 glsl120 glsl330 es100 es300 vk450 spirv hlsl msl" -- "$cur"))
+          return ;;
+        --state)
+          COMPREPLY=($(compgen -W "builtins uniforms" -- "$cur"))
+          return ;;
+      esac
       files="$arb" ;;
     exec)
       options="-h --help --engine --backend --driver --set --state --texture --vectors --format

@@ -1,0 +1,7 @@
+!!ARBfp1.0
+# ARGS: --target es100
+# GLSL ES 1.00 has no 1D textures: refused, naming the construct and the target.
+TEMP t;
+TEX t, fragment.texcoord[0], texture[0], 1D;
+MOV result.color, t;
+END
