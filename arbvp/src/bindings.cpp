@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "arbiter/arbvp/ir.h"
+#include "arbiter/glstate/spelling.h"
 #include "binding_key.h"
 
 namespace arbiter::arbvp {
@@ -28,8 +29,6 @@ constexpr auto kMatrixSpellings = [] {
   for (size_t i = 0; i < spellings.size(); ++i) spellings[i] = glstate::kStateMatrices[i].spelling;
   return spellings;
 }();
-constexpr std::string_view kModifierSpellings[] = {"", ".inverse", ".transpose", ".invtrans"};
-static_assert(std::size(kModifierSpellings) == static_cast<size_t>(MatrixModifier::InvTrans) + 1);
 
 // The selector fields a state binding's spelling shows.
 struct StateFields {
@@ -68,46 +67,22 @@ StateFields StateNameFields(const Binding& b) {
   return fields;
 }
 
-// Appends `spelling` with b's fields in place of its {x}.
-void Spell(std::string_view spelling, const Binding& b, std::string* out) {
-  for (size_t brace; (brace = spelling.find('{')) != std::string_view::npos;) {
-    out->append(spelling.substr(0, brace));
-    const char field = spelling[brace + 1];
-    spelling.remove_prefix(brace + 3);  // past "{x}"
-    switch (field) {
-      case 'f':
-        out->append(FaceName(b.face));
-        break;
-      case 'i':
-        fmt::format_to(std::back_inserter(*out), "{}", b.index);
-        break;
-      case 'c':
-        out->push_back("strq"[b.coord & 3]);
-        break;
-      case 'm': {
-        const auto matrix = static_cast<size_t>(b.matrix);
-        const auto modifier = static_cast<size_t>(b.modifier);
-        Spell(matrix < std::size(kMatrixSpellings) ? kMatrixSpellings[matrix] : "?", b, out);
-        if (modifier < std::size(kModifierSpellings)) out->append(kModifierSpellings[modifier]);
-        break;
-      }
-      case 'r':
-        fmt::format_to(std::back_inserter(*out), "{}", b.row);
-        break;
-    }
-  }
-  out->append(spelling);
-}
-
 std::string StateName(const Binding& b) {
-  const size_t item = static_cast<size_t>(b.state);
-  if (item >= std::size(kStateSpellings)) return "state.?";
-  std::string name;
-  Spell(kStateSpellings[item], b, &name);
-  return name;
+  if (static_cast<size_t>(b.state) >= std::size(kStateSpellings)) return "state.?";
+  return glstate::StateSpelling(StateRefOf(b));
 }
 
 }  // namespace
+
+glstate::StateRef StateRefOf(const Binding& b) {
+  return {.item = b.state,
+          .index = b.index,
+          .face = b.face,
+          .coord = b.coord,
+          .matrix = b.matrix,
+          .modifier = b.modifier,
+          .row = b.row};
+}
 
 std::string BindingName(const Binding& b, ProgramKind kind) {
   switch (b.kind) {

@@ -2290,23 +2290,24 @@ class Parser {
   // <texTarget> ::= "1D" | "2D" | "3D" | "CUBE" | "RECT" (| "SHADOW1D" | "SHADOW2D" |
   //                 "SHADOWRECT" with ARB_fragment_program_shadow)
   [[nodiscard]] bool ParseTexTarget(Instruction* inst) {
-    static const std::pair<std::string_view, TexTarget> kTargets[] = {
-        {"1D", TexTarget::Tex1D},          {"2D", TexTarget::Tex2D},
-        {"3D", TexTarget::Tex3D},          {"CUBE", TexTarget::Cube},
-        {"RECT", TexTarget::Rect},         {"SHADOW1D", TexTarget::Shadow1D},
-        {"SHADOW2D", TexTarget::Shadow2D}, {"SHADOWRECT", TexTarget::ShadowRect}};
+    // texture_targets.def in its order: 1D 2D 3D CUBE RECT SHADOW1D SHADOW2D SHADOWRECT.
+    static const std::vector<std::string_view> names = [] {
+      std::vector<std::string_view> all;
+#define ARBVP_TEX_TARGET(Name, ...) all.push_back(TexTargetName(TexTarget::Name));
+#include "arbiter/arbvp/texture_targets.def"
+#undef ARBVP_TEX_TARGET
+      return all;
+    }();
     const Token& t = Peek();
     if (t.kind == Tok::Ident) {
-      for (const auto& [name, target] : kTargets) {
-        if (Text(t) == name) {
-          inst->target = target;
+      for (size_t i = 0; i < names.size(); ++i) {
+        if (Text(t) == names[i]) {
+          inst->target = static_cast<TexTarget>(i);
           inst->target_range = RangeOf(Advance());
           return true;
         }
       }
     }
-    std::vector<std::string_view> names;
-    for (const auto& [name, target] : kTargets) names.push_back(name);
     std::string hint = t.kind == Tok::Ident || t.kind == Tok::Integer ? ClosestMatch(Text(t), names)
                                                                       : std::string();
     return Fail(Diag::TextureUnknownTarget, RangeOf(t),

@@ -14,20 +14,6 @@ VertexInput::VertexInput() {
 
 FragmentInput::FragmentInput() { texcoord.fill(Vec4{0.0f, 0.0f, 0.0f, 1.0f}); }
 
-namespace {
-
-glstate::StateRef StateRefOf(const Binding& b) {
-  return {.item = b.state,
-          .index = b.index,
-          .face = b.face,
-          .coord = b.coord,
-          .matrix = b.matrix,
-          .modifier = b.modifier,
-          .row = b.row};
-}
-
-}  // namespace
-
 // The derivations are glstate's (values.h), compiled here under this library's
 // -ffp-contract=off: the host library computes the same values.
 Vec4 ReadStateBinding(const GlState& state, const Binding& b) {

@@ -180,6 +180,8 @@ struct Binding {
 
 // The spelling of a binding as in the specs, e.g. "state.matrix.mvp.inverse.row[2]".
 std::string BindingName(const Binding& binding, ProgramKind kind);
+// The GL state a state binding reads, in the host library's terms.
+glstate::StateRef StateRefOf(const Binding& binding);
 
 // The generic vertex attribute a vertex attribute binding occupies: its own index for
 // vertex.attrib[n], the one a conventional attribute aliases in ARBvp table X.2.1
