@@ -188,7 +188,7 @@ class Printer {
     const Variable& v = program_.vars.at(static_cast<size_t>(var));
     std::string text = v.relative_array ? BindingName(v.bindings.at(0), program_.kind)
                                         : names_.at(static_cast<size_t>(var));
-    if (v.relative_array) text.resize(text.rfind('['));
+    if (v.relative_array && text.find('[') != std::string::npos) text.resize(text.rfind('['));
     std::string address =
         fmt::format("{}.{}", names_.at(static_cast<size_t>(address_var)), "xyzw"[component & 3]);
     if (index > 0) return fmt::format("{}[{} + {}]", text, address, index);
