@@ -25,22 +25,14 @@ constexpr OutputTarget kTargets[] = {
     {"msl", EmitTarget::Vk450, OutputKind::Msl, ".metal"},
 };
 
+// The two enumerations list the dialects in one order.
 targets::GlslDialect Dialect(EmitTarget t) {
-  switch (t) {
-    case EmitTarget::Glsl110:
-      return targets::GlslDialect::Glsl110;
-    case EmitTarget::Glsl120:
-      return targets::GlslDialect::Glsl120;
-    case EmitTarget::Glsl330:
-      return targets::GlslDialect::Glsl330Core;
-    case EmitTarget::Es100:
-      return targets::GlslDialect::Es100;
-    case EmitTarget::Es300:
-      return targets::GlslDialect::Es300;
-    case EmitTarget::Vk450:
-      return targets::GlslDialect::Vulkan450;
-  }
-  return targets::GlslDialect::Glsl110;
+  static_assert(
+      static_cast<int>(targets::GlslDialect::Glsl330Core) ==
+          static_cast<int>(EmitTarget::Glsl330) &&
+      static_cast<int>(targets::GlslDialect::Es300) == static_cast<int>(EmitTarget::Es300) &&
+      static_cast<int>(targets::GlslDialect::Vulkan450) == static_cast<int>(EmitTarget::Vk450));
+  return static_cast<targets::GlslDialect>(t);
 }
 
 std::string FirstError(const std::vector<targets::Message>& messages) {
@@ -90,6 +82,24 @@ std::string Convert(const OutputTarget& target, const std::string& glsl, targets
   return text;
 }
 
+// What HLSL (shader model 5.0) lacks beyond vk450's GLSL: Direct3D 11 has no point size, so
+// a write of result.pointsize is refused (SPIRV-Cross cannot write it either).
+arbvp::Untranslatable FindUntranslatableHlsl(const arbvp::Program& program) {
+  for (const arbvp::Instruction& inst : program.instructions) {
+    const int var = inst.dst.var;
+    if (var < 0 || static_cast<size_t>(var) >= program.vars.size()) continue;
+    for (const arbvp::Binding& b : program.vars[static_cast<size_t>(var)].bindings) {
+      if (b.kind == arbvp::BindingKind::Result && b.result == arbvp::ResultReg::PointSize) {
+        return {
+            "result.pointsize: HLSL shader model 5.0 has no point size (Direct3D 11 draws "
+            "points one pixel wide)",
+            inst.dst.range};
+      }
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 const OutputTarget* LookupOutputTarget(std::string_view name) {
@@ -120,6 +130,7 @@ TargetTranslation TranslateForTarget(const OutputTarget& target, const arbvp::Pr
        {std::pair{vertex, vertex_source}, {fragment, fragment_source}}) {
     if (!program) continue;
     arbvp::Untranslatable u = arbvp::FindUntranslatable(*program, emit);
+    if (u.what.empty() && target.kind == OutputKind::Hlsl) u = FindUntranslatableHlsl(*program);
     if (u.what.empty()) continue;
     compiler::LineCol at = source ? source->Locate(u.range.begin) : compiler::LineCol{};
     out.error =

@@ -209,6 +209,8 @@ std::string FinishForTarget(const Context& ctx, std::string text) {
 
 std::string_view EmitTargetName(EmitTarget target) { return emit::GetDialectRow(target).spelling; }
 
+std::string_view EmitTargetTitle(EmitTarget target) { return emit::GetDialectRow(target).title; }
+
 bool LookupEmitTarget(std::string_view name, EmitTarget* target) {
   for (const emit::DialectRow& row : emit::kTargetRows) {
     if (row.spelling != name) continue;

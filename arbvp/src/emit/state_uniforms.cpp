@@ -174,17 +174,13 @@ std::string InvariantPosition(Context& ctx) {
   position.kind = BindingKind::VertexAttrib;
   position.vertex_attrib = VertexAttrib::Position;
   const std::string p = ReadBinding(ctx, position).text;
-  std::vector<std::string> rows;
-  for (int r = 0; r < 4; ++r) {
-    Binding row;
-    row.kind = BindingKind::State;
-    row.state = StateItem::MatrixRow;
-    row.matrix = MatrixName::Mvp;
-    row.row = r;
-    rows.push_back(fmt::format("dot({}, {})", ReadBinding(ctx, row).text, p));
-  }
-  return fmt::format("gl_Position = vec4({}, {}, {}, {});  // OPTION ARB_position_invariant\n",
-                     rows[0], rows[1], rows[2], rows[3]);
+  // Reading a row declares the matrix's uniform (MatrixRow names it arb_matrix_mvp0).
+  Binding row;
+  row.kind = BindingKind::State;
+  row.state = StateItem::MatrixRow;
+  row.matrix = MatrixName::Mvp;
+  (void)ReadBinding(ctx, row);
+  return fmt::format("gl_Position = arb_matrix_mvp0 * {};  // OPTION ARB_position_invariant\n", p);
 }
 
 int VaryingLocation(std::string_view name) {

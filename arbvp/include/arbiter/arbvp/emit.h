@@ -25,6 +25,8 @@ enum class EmitTarget : uint8_t {
 // The --target spelling ("glsl330"); LookupEmitTarget reads it back.
 std::string_view EmitTargetName(EmitTarget target);
 bool LookupEmitTarget(std::string_view name, EmitTarget* target);
+// The dialect as refusals name it ("GLSL ES 1.00").
+std::string_view EmitTargetTitle(EmitTarget target);
 
 // Where GL state comes from: GLSL 1.10 built-ins (gl_ModelViewMatrix, gl_Vertex, gl_TexCoord),
 // or named uniforms, attributes with locations and named varyings (forced for the targets

@@ -1,0 +1,220 @@
+// The GLSL targets (emit_targets.def) and state as uniforms: golden translations of a few
+// programs per target (tests/emit/golden/targets/NAME.TARGET.vert|frag|bindings.json), every
+// valid corpus program on every target held to the target's validator (glslang for GLSL and
+// HLSL, spirv-val for SPIR-V) or refused with a diagnostic naming the construct and the
+// target, and the refusals themselves.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "arbiter/targets/targets.h"
+#include "emit_fixture.h"
+
+namespace arbiter::arbvp::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr EmitTarget kTargets[] = {EmitTarget::Glsl120, EmitTarget::Glsl330, EmitTarget::Es100,
+                                   EmitTarget::Es300, EmitTarget::Vk450};
+
+// The two enumerations list the dialects in one order.
+targets::GlslDialect Dialect(EmitTarget t) {
+  static_assert(
+      static_cast<int>(targets::GlslDialect::Glsl330Core) ==
+          static_cast<int>(EmitTarget::Glsl330) &&
+      static_cast<int>(targets::GlslDialect::Es300) == static_cast<int>(EmitTarget::Es300) &&
+      static_cast<int>(targets::GlslDialect::Vulkan450) == static_cast<int>(EmitTarget::Vk450));
+  return static_cast<targets::GlslDialect>(t);
+}
+
+targets::Stage StageOf(ProgramKind kind) {
+  return kind == ProgramKind::Vertex ? targets::Stage::Vertex : targets::Stage::Fragment;
+}
+
+std::string Messages(const std::vector<targets::Message>& messages) {
+  std::string out;
+  for (const targets::Message& m : messages) out += targets::FormatMessage(m) + "\n";
+  return out;
+}
+
+// "" when the target's validators accept the shader (Vulkan: the SPIR-V module, its HLSL
+// and its MSL too), else what they said.
+std::string TargetErrors(EmitTarget target, ProgramKind kind, const std::string& glsl) {
+  std::vector<targets::Message> messages;
+  if (!targets::ValidateGlsl(glsl, StageOf(kind), Dialect(target), &messages)) {
+    return "glsl: " + Messages(messages);
+  }
+  if (target != EmitTarget::Vk450) return "";
+  std::vector<uint32_t> spirv;
+  if (!targets::CompileGlslToSpirv(glsl, StageOf(kind), &spirv, &messages)) {
+    return "spirv: " + Messages(messages);
+  }
+  std::string hlsl;
+  // Direct3D 11 has no point size: `translate --target hlsl` refuses result.pointsize.
+  if (glsl.find("gl_PointSize") != std::string::npos) return "";
+  if (!targets::SpirvToHlsl(spirv, &hlsl, &messages)) return "to hlsl: " + Messages(messages);
+  if (!targets::ValidateHlsl(hlsl, StageOf(kind), &messages)) return "hlsl: " + Messages(messages);
+  std::string msl;
+  if (!targets::SpirvToMsl(spirv, &msl, &messages)) return "to msl: " + Messages(messages);
+  return "";
+}
+
+EmitOptions For(EmitTarget target) {
+  EmitOptions o;
+  o.target = target;
+  return o;
+}
+
+Checked Load(const std::string& path) {
+  std::string full = (fs::path(ARBITER_SOURCE_DIR) / path).string();
+  return CheckText(fs::path(path).filename().string(), ReadFile(full));
+}
+
+void Compare(const std::string& file, const std::string& actual) {
+  fs::path path = fs::path(ARBITER_TEST_DIR) / "golden" / "targets" / file;
+  if (std::getenv("ARBITER_UPDATE_GOLDEN")) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing: rerun with ARBITER_UPDATE_GOLDEN=1";
+  EXPECT_EQ(ReadFile(path.string()), actual)
+      << file << " differs: rerun with ARBITER_UPDATE_GOLDEN=1 and review the diff";
+}
+
+struct Golden {
+  const char* name;
+  const char* vertex;
+  const char* fragment;
+};
+
+const Golden kGoldens[] = {
+    {"pair", "tests/emit/golden/inputs/pair.vp", "tests/emit/golden/inputs/pair.fp"},
+    {"lighting", "corpus/arb/valid/directional-light-two-sided.vp", nullptr},
+    {"fog-linear", nullptr, "corpus/arb/valid/option-fog-linear.fp"},
+    {"position-invariant", "corpus/arb/valid/position-invariant-lighting.vp", nullptr},
+    {"relative-addressing", "corpus/arb/valid/arl-relative-addressing.vp", nullptr},
+};
+
+TEST(EmitTargetsTest, GoldenTranslations) {
+  for (const Golden& g : kGoldens) {
+    for (EmitTarget target : kTargets) {
+      SCOPED_TRACE(std::string(g.name) + " " + std::string(EmitTargetName(target)));
+      const std::string base = std::string(g.name) + "." + std::string(EmitTargetName(target));
+      if (g.vertex && g.fragment) {
+        Checked vp = Load(g.vertex);
+        Checked fp = Load(g.fragment);
+        ASSERT_TRUE(vp.program && fp.program) << vp.errors << fp.errors;
+        PairTranslation pair =
+            EmitGlslPair(*vp.program, *fp.program, For(target), vp.source.get(), fp.source.get());
+        EXPECT_EQ(TargetErrors(target, ProgramKind::Vertex, pair.vertex), "");
+        EXPECT_EQ(TargetErrors(target, ProgramKind::Fragment, pair.fragment), "");
+        Compare(base + ".vert", pair.vertex);
+        Compare(base + ".frag", pair.fragment);
+        Compare(base + ".bindings.json", BindingMapToJson(pair.bindings));
+        continue;
+      }
+      Checked c = Load(g.vertex ? g.vertex : g.fragment);
+      ASSERT_TRUE(c.program) << c.errors;
+      Translation t = EmitGlsl(*c.program, For(target), c.source.get());
+      EXPECT_EQ(TargetErrors(target, c.program->kind, t.glsl), "");
+      Compare(base + (g.vertex ? ".vert" : ".frag"), t.glsl);
+      Compare(base + ".bindings.json", BindingMapToJson(t.bindings));
+    }
+  }
+}
+
+// GLSL 1.10 with --state uniforms: the same uniforms, GLSL 1.10 keywords.
+TEST(EmitTargetsTest, Glsl110WithStateUniforms) {
+  Checked c = Load("corpus/arb/valid/directional-light-two-sided.vp");
+  ASSERT_TRUE(c.program) << c.errors;
+  EmitOptions o;
+  o.state = StateSource::Uniforms;
+  Translation t = EmitGlsl(*c.program, o, c.source.get());
+  EXPECT_EQ(GlslErrors(ProgramKind::Vertex, t.glsl), "");
+  EXPECT_EQ(t.glsl.find("gl_ModelView"), std::string::npos) << t.glsl;
+  EXPECT_EQ(t.glsl.find("gl_Vertex"), std::string::npos) << t.glsl;
+  EXPECT_NE(t.glsl.find("attribute vec4 arb_vertex_position;"), std::string::npos) << t.glsl;
+  EXPECT_TRUE(t.bindings.state_uniforms);
+}
+
+// Every valid corpus program on every target: accepted by the target's validators, or
+// refused with a diagnostic that names the target's dialect.
+TEST(EmitTargetsTest, CorpusTranslatesToEveryTargetOrIsRefused) {
+  std::vector<std::string> files = ValidCorpusFiles();
+  for (const fs::directory_entry& e :
+       fs::directory_iterator(fs::path(ARBITER_SOURCE_DIR) / "corpus/arb/valid-nv")) {
+    files.push_back("valid-nv/" + e.path().filename().string());
+  }
+  ASSERT_GT(files.size(), 200u);
+  int translated = 0;
+  int refused = 0;
+  for (const std::string& file : files) {
+    Checked c = Load("corpus/arb/" + file);
+    ASSERT_TRUE(c.program) << file << ": " << c.errors;
+    for (EmitTarget target : kTargets) {
+      SCOPED_TRACE(file + " " + std::string(EmitTargetName(target)));
+      Untranslatable u = FindUntranslatable(*c.program, For(target));
+      if (!u.what.empty()) {
+        EXPECT_NE(u.what.find(EmitTargetTitle(target)), std::string::npos) << u.what;
+        EXPECT_LT(u.range.begin, u.range.end) << u.what;
+        ++refused;
+        continue;
+      }
+      Translation t = EmitGlsl(*c.program, For(target), c.source.get());
+      EXPECT_EQ(TargetErrors(target, c.program->kind, t.glsl), "") << t.glsl;
+      ++translated;
+    }
+  }
+  // Most programs translate everywhere: the refusals are the dialects' gaps.
+  EXPECT_GT(translated, 8 * refused);
+}
+
+std::string RefusalOf(EmitTarget target, const std::string& text) {
+  Checked c = CheckText("t", text);
+  EXPECT_TRUE(c.program) << c.errors;
+  if (!c.program) return "";
+  Untranslatable u = FindUntranslatable(*c.program, For(target));
+  if (u.what.empty()) return "";
+  compiler::LineCol at = c.source->Locate(u.range.begin);
+  return std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + u.what;
+}
+
+TEST(EmitTargetsTest, Refusals) {
+  const std::string tex1d =
+      "!!ARBfp1.0\nTEMP t;\nTEX t, fragment.texcoord[0], texture[0], 1D;\n"
+      "MOV result.color, t;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, tex1d),
+            "3:42: TEX of a 1D texture: GLSL ES 1.00 has no 1D samplers");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es300, tex1d),
+            "3:42: TEX of a 1D texture: GLSL ES 3.00 has no 1D samplers");
+  EXPECT_EQ(RefusalOf(EmitTarget::Glsl330, tex1d), "");
+  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, tex1d), "");
+  const std::string rect =
+      "!!ARBfp1.0\nTEX result.color, fragment.texcoord[0], texture[1], RECT;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, rect),
+            "2:53: TEX of a RECT texture: GLSL 4.50 (Vulkan) has no RECT samplers");
+  EXPECT_EQ(RefusalOf(EmitTarget::Glsl330, rect), "");
+  const std::string position = "!!ARBfp1.0\nMOV result.color, fragment.position;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, position),
+            "2:19: fragment.position: GLSL 4.50 (Vulkan) has its window origin at the upper left "
+            "(ARB counts y from the lower left)");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es300, position), "");
+  const std::string color1 =
+      "!!ARBfp1.0\nOPTION ARB_draw_buffers;\nMOV result.color[1], fragment.color;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, color1),
+            "3:5: result.color[n] with n > 0: GLSL ES 1.00 has one colour output");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es300, color1), "");
+  const std::string rep =
+      "!!ARBfp1.0\nOPTION NV_fragment_program2;\nTEMP t;\nMOV t, 0;\nREP {4}.x;\n"
+      "ADD t, t, 1;\nENDREP;\nMOV result.color, t;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, rep),
+            "5:1: REP: GLSL ES 1.00 has only for loops with constant bounds (Appendix A), no "
+            "branches");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es300, rep), "");
+}
+
+}  // namespace
+}  // namespace arbiter::arbvp::testing

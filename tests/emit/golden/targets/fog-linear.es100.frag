@@ -1,0 +1,30 @@
+#version 100
+// ARB fragment program translated to GLSL ES 1.00 by arbiter.
+
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+precision highp float;
+precision highp int;
+#else
+#error "arbiter: exact ARB arithmetic needs highp floats in fragment shaders"
+#endif
+
+varying vec4 arb_color0;
+varying float arb_fogcoord;
+varying vec4 arb_texcoord0;
+uniform vec4 arb_state_fog_color;  // state.fog.color
+uniform vec4 arb_state_fog_params;  // state.fog.params
+uniform highp sampler2D arb_texture0;  // texture[0], 2D
+
+void main() {
+  vec4 base = vec4(0.0);
+  vec4 arb_color = vec4(0.0);  // result.color, before fog
+
+  // TEX base, fragment.texcoord[0], texture[0], 2D;
+  base = texture2D(arb_texture0, arb_texcoord0.xy);
+  // MUL result.color, base, fragment.color;
+  arb_color = base * arb_color0;
+
+  // OPTION ARB_fog_linear: f = (end - c) / (end - start), c = arb_fogcoord
+  float arb_fog = clamp((arb_state_fog_params.z - arb_fogcoord) / (arb_state_fog_params.z - arb_state_fog_params.y), 0.0, 1.0);
+  gl_FragColor = vec4(mix(clamp(arb_state_fog_color.rgb, 0.0, 1.0), clamp(arb_color.rgb, 0.0, 1.0), arb_fog), clamp(arb_color.a, 0.0, 1.0));
+}
