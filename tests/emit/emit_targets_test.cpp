@@ -172,6 +172,30 @@ TEST(EmitTargetsTest, CorpusTranslatesToEveryTargetOrIsRefused) {
   EXPECT_GT(translated, 8 * refused);
 }
 
+// ARB names that later dialects reserve (or that name their types and the lookups the
+// translation calls) are renamed there: the output still compiles.
+TEST(EmitTargetsTest, NamesReservedByLaterDialects) {
+  const std::string text =
+      "!!ARBvp1.0\nTEMP sample, patch, buffer, shared, filter, subroutine, coherent, readonly, "
+      "resource, atomic_uint, precise, superp, centroid, layout, flat, smooth, uint, uvec4, "
+      "isampler2D, mat2x3, textureLod, case;\n"
+      "MOV sample, vertex.position;\nMOV patch, sample;\nMOV buffer, patch;\n"
+      "MOV shared, buffer;\nMOV filter, shared;\nMOV subroutine, filter;\n"
+      "MOV coherent, subroutine;\nMOV readonly, coherent;\nMOV resource, readonly;\n"
+      "MOV atomic_uint, resource;\nMOV precise, atomic_uint;\nMOV superp, precise;\n"
+      "MOV centroid, superp;\nMOV layout, centroid;\nMOV flat, layout;\nMOV smooth, flat;\n"
+      "MOV uint, smooth;\nMOV uvec4, uint;\nMOV isampler2D, uvec4;\nMOV mat2x3, isampler2D;\n"
+      "MOV textureLod, mat2x3;\nMOV case, textureLod;\nMOV result.position, case;\nEND\n";
+  for (EmitTarget target : kTargets) {
+    SCOPED_TRACE(std::string(EmitTargetName(target)));
+    Translation t = TranslateText(text, For(target));
+    EXPECT_EQ(TargetErrors(target, ProgramKind::Vertex, t.glsl), "") << t.glsl;
+    EXPECT_NE(t.glsl.find("vec4 u_sample = vec4(0.0);"), std::string::npos) << t.glsl;
+  }
+  // GLSL 1.10 keeps the names it does not reserve (its output is unchanged).
+  EXPECT_NE(TranslateText(text).glsl.find("vec4 sample = vec4(0.0);"), std::string::npos);
+}
+
 std::string RefusalOf(EmitTarget target, const std::string& text) {
   Checked c = CheckText("t", text);
   EXPECT_TRUE(c.program) << c.errors;

@@ -205,6 +205,29 @@ std::string FinishForTarget(const Context& ctx, std::string text) {
   return text;
 }
 
+bool IsReservedLater(std::string_view name) {
+  static constexpr std::string_view kWords[] = {
+      // Keywords and reserved words of GLSL 1.20 to 4.50 and GLSL ES 1.00 and 3.00.
+      "active", "atomic_uint", "buffer", "case", "cast", "centroid", "coherent", "common", "filter",
+      "flat", "highp", "invariant", "layout", "lowp", "mediump", "namespace", "noperspective",
+      "partition", "patch", "precise", "precision", "readonly", "resource", "restrict", "sample",
+      "shared", "sizeof", "smooth", "subroutine", "superp", "uint", "using", "writeonly", "input",
+      "output", "row_major", "lowp", "dmat2", "dmat3", "dmat4",
+      // The GLSL 1.30 lookups the translation calls, and the helpers of later dialects.
+      "texture", "textureProj", "textureLod", "textureProjLod", "textureGrad", "textureProjGrad",
+      "transpose", "inverse", "round", "trunc", "determinant", "isnan", "isinf"};
+  for (std::string_view w : kWords) {
+    if (name == w) return true;
+  }
+  // Types: matNxM, [iu]vecN, dvecN, and every [iu]sampler* and [iu]image*.
+  auto starts = [&](std::string_view prefix) { return name.substr(0, prefix.size()) == prefix; };
+  for (std::string_view prefix : {"mat2x", "mat3x", "mat4x", "dmat", "uvec", "dvec", "sampler",
+                                  "isampler", "usampler", "image", "iimage", "uimage"}) {
+    if (starts(prefix)) return true;
+  }
+  return false;
+}
+
 }  // namespace emit
 
 std::string_view EmitTargetName(EmitTarget target) { return emit::GetDialectRow(target).spelling; }

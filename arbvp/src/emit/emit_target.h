@@ -74,6 +74,9 @@ std::string InvariantPosition(Context& ctx);
 std::string UniformsDeclarations(Context& ctx);
 // Vulkan varying locations (by name, so that a pair's interfaces match).
 int VaryingLocation(std::string_view name);
+// Whether a later dialect (GLSL 1.20 to 4.50, ES 1.00 and 3.00) reserves `name` or declares
+// it as a type or a function the translation calls (a variable of that name would hide it).
+bool IsReservedLater(std::string_view name);
 
 }  // namespace arbiter::arbvp::emit
 

@@ -83,6 +83,7 @@ void AssignNames(Context& ctx) {
     std::string base = SanitizeName(!v.name.empty()             ? v.name
                                     : v.kind == VarKind::Attrib ? "attrib"
                                                                 : "param");
+    if (ctx.target.id != EmitTarget::Glsl110 && IsReservedLater(base)) base.insert(0, "u_");
     std::string name = base;
     for (int n = 2; taken.count(name); ++n) name = base + "_" + std::to_string(n);
     taken.insert(name);
