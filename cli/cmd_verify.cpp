@@ -37,15 +37,22 @@ std::string Component(const runtime::Disagreement& d) {
   return fmt::format("{}.{}", d.reg, "xyzw"[d.component]);
 }
 
+// Every engine name --engines takes, in report order.
+std::vector<std::string> AllEngines() {
+  std::vector<std::string> all{runtime::kEngineRef, runtime::kEngineMesaArb,
+                               runtime::kEngineMesaGlsl};
+  for (const runtime::TargetEngineInfo& t : runtime::kTargetEngines) all.emplace_back(t.name);
+  return all;
+}
+
 std::string Values(const runtime::Disagreement& d) {
   std::string out;
-  for (const char* engine :
-       {runtime::kEngineRef, runtime::kEngineMesaArb, runtime::kEngineMesaGlsl}) {
+  for (const std::string& engine : AllEngines()) {
     auto it = d.values.find(engine);
     if (it == d.values.end()) continue;
     if (!out.empty()) out += ", ";
     out += fmt::format("{} {}", engine, arbvp::FormatFloat(it->second));
-    if (std::string_view(engine) == runtime::kEngineRef && d.component >= 0) {
+    if (engine == runtime::kEngineRef && d.component >= 0) {
       out += fmt::format(" (tolerance {})", arbvp::FormatFloat(d.tolerance));
     }
   }
@@ -68,6 +75,7 @@ void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyComman
   size_t agree = 0;
   size_t disagree = 0;
   size_t errors = 0;
+  size_t not_applicable = 0;
   for (const runtime::Verdict& v : verdicts) {
     if (!v.error.empty()) {
       ++errors;
@@ -104,9 +112,16 @@ void PrintText(const std::vector<runtime::Verdict>& verdicts, const VerifyComman
     for (const auto& [name, count] : v.deviations) {
       out += fmt::format("  known deviation {} ({} components)\n", name, count);
     }
+    for (const auto& [engine, why] : v.not_applicable) {
+      out += fmt::format("  not applicable on {}: {}\n", engine, why);
+      ++not_applicable;
+    }
   }
   std::string not_run =
       rejected > 0 ? fmt::format(", {} rejected by the checker (not run)", rejected) : "";
+  if (not_applicable > 0) {
+    not_run += fmt::format(", {} not applicable (a target refuses the program)", not_applicable);
+  }
   out += fmt::format("verify: {} program(s): {} agree, {} disagree, {} error(s){} ({})\n",
                      verdicts.size() + rejected, agree, disagree, errors, not_run, setup);
   fmt::print("{}", out);
@@ -138,6 +153,7 @@ nlohmann::ordered_json VerdictJson(const runtime::Verdict& v, size_t max_reports
     list.push_back(std::move(jd));
   }
   j["disagreements"] = list;
+  if (!v.not_applicable.empty()) j["not_applicable"] = v.not_applicable;
   return j;
 }
 
@@ -184,10 +200,15 @@ int RunVerify(const VerifyCommandOptions& options) {
   };
   verify.mesa_arb = has(runtime::kEngineMesaArb);
   verify.mesa_glsl = has(runtime::kEngineMesaGlsl);
-  if (!has(runtime::kEngineRef) || !(verify.mesa_arb || verify.mesa_glsl)) {
+  for (const runtime::TargetEngineInfo& t : runtime::kTargetEngines) {
+    if (has(t.name)) verify.targets.emplace_back(t.name);
+  }
+  if (!has(runtime::kEngineRef) ||
+      !(verify.mesa_arb || verify.mesa_glsl || !verify.targets.empty())) {
     fmt::print(stderr,
                "arbiter: error: --engines: ref (the specification, every engine's reference) "
-               "and at least one of mesa-arb, mesa-glsl\n");
+               "and at least one of mesa-arb, mesa-glsl, mesa-glsl330, mesa-es300, "
+               "mesa-es100\n");
     return static_cast<int>(Exit::Usage);
   }
   arbvp::Mutation mutation = arbvp::Mutation::None;
@@ -261,10 +282,10 @@ std::function<int()> AddVerifyCommand(CLI::App* app) {
   cmd->add_option("files", common.files, "ARB programs (directories are searched)")->required();
   cmd->add_option("--engines", options->engines,
                   "ref and the Mesa engines to compare with it: mesa-arb (the program), "
-                  "mesa-glsl (its translation)")
+                  "mesa-glsl (its translation), mesa-glsl330, mesa-es300, mesa-es100 (the "
+                  "target translations on EGL core and ES contexts)")
       ->delimiter(',')
-      ->check(
-          CLI::IsMember({runtime::kEngineRef, runtime::kEngineMesaArb, runtime::kEngineMesaGlsl}));
+      ->check(CLI::IsMember(AllEngines()));
   cmd->add_option("--vectors", options->vectors, "random input vectors besides the edge vectors")
       ->check(CLI::Range(0, 100000));
   cmd->add_option("--seed", options->seed, "seed of the random inputs");

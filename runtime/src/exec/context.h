@@ -35,4 +35,10 @@ void PreloadOsMesa();
 std::unique_ptr<GlContext> CreateOsMesaContext(std::string* error);
 std::unique_ptr<GlContext> CreateEglContext(std::string* error);
 
+// The EGL contexts of the target engines (mesa-glsl330, mesa-es300, mesa-es100): a desktop
+// core-profile 3.3 context, or an OpenGL ES context of the given major version (Mesa may give
+// a later minor or major version that runs the same shaders). Null (with `error`) on failure.
+enum class EglApi : uint8_t { Core33, Es3, Es2 };
+std::unique_ptr<GlContext> CreateEglApiContext(EglApi api, std::string* error);
+
 }  // namespace arbiter::runtime::exec

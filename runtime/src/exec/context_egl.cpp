@@ -87,13 +87,14 @@ const EglLibrary* LoadEgl(std::string* error) {
 
 class EglGlContext final : public GlContext {
  public:
-  EglGlContext(const EglLibrary* lib, EGLContext context) : lib_(lib), context_(context) {}
+  EglGlContext(const EglLibrary* lib, EGLContext context, EGLenum api = EGL_OPENGL_API)
+      : lib_(lib), context_(context), api_(api) {}
   ~EglGlContext() override { lib_->DestroyContext(lib_->display, context_); }
   EglGlContext(const EglGlContext&) = delete;
   EglGlContext& operator=(const EglGlContext&) = delete;
 
   bool MakeCurrent() override {
-    return lib_->BindAPI(EGL_OPENGL_API) == EGL_TRUE &&
+    return lib_->BindAPI(api_) == EGL_TRUE &&
            lib_->MakeCurrent(lib_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
   }
   void Release() override {
@@ -107,6 +108,7 @@ class EglGlContext final : public GlContext {
  private:
   const EglLibrary* lib_;
   EGLContext context_;
+  EGLenum api_;
 };
 
 }  // namespace
@@ -127,6 +129,35 @@ std::unique_ptr<GlContext> CreateEglContext(std::string* error) {
     return nullptr;
   }
   return std::make_unique<EglGlContext>(lib, context);
+}
+
+std::unique_ptr<GlContext> CreateEglApiContext(EglApi api, std::string* error) {
+  const EglLibrary* lib = LoadEgl(error);
+  if (lib == nullptr) return nullptr;
+  const bool es = api != EglApi::Core33;
+  const EGLenum client = es ? EGL_OPENGL_ES_API : EGL_OPENGL_API;
+  const char* what = api == EglApi::Core33 ? "OpenGL 3.3 core profile"
+                     : api == EglApi::Es3  ? "OpenGL ES 3.0"
+                                           : "OpenGL ES 2.0";
+  if (lib->BindAPI(client) != EGL_TRUE) {
+    *error = fmt::format("eglBindAPI failed: {} is not available through EGL", what);
+    return nullptr;
+  }
+  const EGLint core[] = {EGL_CONTEXT_MAJOR_VERSION,
+                         3,
+                         EGL_CONTEXT_MINOR_VERSION,
+                         3,
+                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                         EGL_NONE};
+  const EGLint gles[] = {EGL_CONTEXT_MAJOR_VERSION, api == EglApi::Es3 ? 3 : 2, EGL_NONE};
+  EGLContext context =
+      lib->CreateContext(lib->display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es ? gles : core);
+  if (context == EGL_NO_CONTEXT) {
+    *error = fmt::format("eglCreateContext failed ({}, EGL error 0x{:04x})", what, lib->GetError());
+    return nullptr;
+  }
+  return std::make_unique<EglGlContext>(lib, context, client);
 }
 
 }  // namespace arbiter::runtime::exec

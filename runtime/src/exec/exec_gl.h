@@ -148,7 +148,15 @@ namespace arbiter::runtime::exec {
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation, "glGetUniformLocation")                      \
   X(PFNGLUNIFORM4FVPROC, Uniform4fv, "glUniform4fv")                                              \
   X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i")                                                 \
-  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv, "glUniformMatrix4fv")
+  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv, "glUniformMatrix4fv")                            \
+  X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays, "glGenVertexArrays")                               \
+  X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray")                               \
+  X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays, "glDeleteVertexArrays")                      \
+  X(PFNGLGENBUFFERSPROC, GenBuffers, "glGenBuffers")                                              \
+  X(PFNGLBINDBUFFERPROC, BindBuffer, "glBindBuffer")                                              \
+  X(PFNGLBUFFERDATAPROC, BufferData, "glBufferData")                                              \
+  X(PFNGLDELETEBUFFERSPROC, DeleteBuffers, "glDeleteBuffers")                                     \
+  X(PFNGLDEPTHRANGEFPROC, DepthRangef, "glDepthRangef")
 
 struct ExecGl {
 #define ARBITER_EXEC_GL_MEMBER(type, member, name) type member = nullptr;

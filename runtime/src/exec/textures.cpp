@@ -87,7 +87,8 @@ void Image(const ExecGl& gl, GLenum target, const arbvp::Texture& t, const float
   }
 }
 
-bool Upload(const ExecGl& gl, int unit, const arbvp::Texture& t, std::string* error) {
+bool Upload(const ExecGl& gl, int unit, const arbvp::Texture& t, bool compatibility,
+            std::string* error) {
   const int layers = t.dim == arbvp::TexDim::Cube ? 6 : t.dim == arbvp::TexDim::Tex3D ? t.depth : 1;
   const int height = t.dim == arbvp::TexDim::Tex1D ? 1 : t.height;
   if (t.width < 1 || height < 1 || layers < 1) {
@@ -134,7 +135,7 @@ bool Upload(const ExecGl& gl, int unit, const arbvp::Texture& t, std::string* er
     gl.TexParameteri(target, GL_TEXTURE_COMPARE_MODE,
                      t.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE);
     gl.TexParameteri(target, GL_TEXTURE_COMPARE_FUNC, CompareFunc(t.compare_func));
-    gl.TexParameteri(target, GL_DEPTH_TEXTURE_MODE, DepthMode(t.depth_mode));
+    if (compatibility) gl.TexParameteri(target, GL_DEPTH_TEXTURE_MODE, DepthMode(t.depth_mode));
   }
   return true;
 }
@@ -142,7 +143,7 @@ bool Upload(const ExecGl& gl, int unit, const arbvp::Texture& t, std::string* er
 }  // namespace
 
 bool UploadTextures(const ExecGl& gl, const std::map<int, arbvp::Texture>& textures,
-                    std::vector<GLuint>* created, std::string* error) {
+                    std::vector<GLuint>* created, std::string* error, bool compatibility) {
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (const auto& [unit, texture] : textures) {
     if (unit < 0 || unit >= arbvp::kMaxTextureImageUnits) {
@@ -155,7 +156,7 @@ bool UploadTextures(const ExecGl& gl, const std::map<int, arbvp::Texture>& textu
     created->push_back(name);
     gl.ActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     gl.BindTexture(Target(texture.dim), name);
-    if (!Upload(gl, unit, texture, error)) return false;
+    if (!Upload(gl, unit, texture, compatibility, error)) return false;
   }
   gl.ActiveTexture(GL_TEXTURE0);
   return true;

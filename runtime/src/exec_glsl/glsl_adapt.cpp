@@ -13,15 +13,11 @@
 namespace arbiter::runtime::exec {
 namespace {
 
-using arbvp::Binding;
-using arbvp::ResultReg;
-
-using Renames = std::map<std::string, std::string>;
-
 bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// Replaces every identifier of `text` found in `renames` (comments included: harmless).
+}  // namespace
+
 std::string RenameIdentifiers(const std::string& text, const Renames& renames) {
   std::string out;
   out.reserve(text.size() + 256);
@@ -41,7 +37,6 @@ std::string RenameIdentifiers(const std::string& text, const Renames& renames) {
   return out;
 }
 
-// Drops every line that contains `needle`.
 std::string DropLines(const std::string& text, const std::string& needle) {
   std::string out;
   size_t begin = 0;
@@ -55,8 +50,6 @@ std::string DropLines(const std::string& text, const std::string& needle) {
   return out;
 }
 
-// Inserts `globals` after the leading preprocessor lines (#version and #extension must
-// come before any declaration).
 std::string InsertGlobals(const std::string& text, const std::string& globals) {
   size_t insert = 0;
   size_t begin = 0;
@@ -64,7 +57,7 @@ std::string InsertGlobals(const std::string& text, const std::string& globals) {
     size_t end = text.find('\n', begin);
     end = end == std::string::npos ? text.size() : end + 1;
     std::string_view line(text.data() + begin, end - begin);
-    if (line.rfind('#', 0) == 0) {
+    if (line.rfind('#', 0) == 0 || line.rfind("precision ", 0) == 0) {
       insert = end;
     } else if (line.rfind("//", 0) != 0 && line != "\n") {
       break;
@@ -74,10 +67,8 @@ std::string InsertGlobals(const std::string& text, const std::string& globals) {
   return text.substr(0, insert) + globals + text.substr(insert);
 }
 
-// The translation with its `main` renamed and the output built-ins of `renames` made
-// globals (declared by `globals`); false when it has no `void main()`.
-bool Adapt(const std::string& text, const Renames& renames, const std::string& globals,
-           std::string* out, std::string* error) {
+bool AdaptMain(const std::string& text, const Renames& renames, const std::string& globals,
+               std::string* out, std::string* error) {
   if (text.find("void main()") == std::string::npos) {
     *error = "the GLSL translation has no 'void main()' to adapt for readback";
     return false;
@@ -87,6 +78,11 @@ bool Adapt(const std::string& text, const Renames& renames, const std::string& g
   *out = InsertGlobals(RenameIdentifiers(text, all), globals);
   return true;
 }
+
+namespace {
+
+using arbvp::Binding;
+using arbvp::ResultReg;
 
 // The global that holds a result register after the renames below, as a vec4. GLSL has
 // only x of the fog coordinate and point size, and only z of the depth: the rest reads 0.
@@ -168,8 +164,8 @@ bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, int max_attach
       reads += fmt::format("  gl_FragData[{0}] = arbiter_out{0};\n", k);
       pass.attachments.push_back(static_cast<int>(s));
     }
-    if (!Adapt(base, kVertexOutputs, kVertexGlobals + PixelDeclaration(plan) + varyings,
-               &pass.vertex, error)) {
+    if (!AdaptMain(base, kVertexOutputs, kVertexGlobals + PixelDeclaration(plan) + varyings,
+                   &pass.vertex, error)) {
       return false;
     }
     pass.vertex += fmt::format(
@@ -220,7 +216,7 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, int max_atta
                              {"gl_PointSize", "arbiter_pointsize"}};
     const std::string globals =
         "vec4 arbiter_position;\nfloat arbiter_pointsize;\n" + PixelDeclaration(plan);
-    if (!Adapt(t.vertex, renames, globals, &vertex, error)) return false;
+    if (!AdaptMain(t.vertex, renames, globals, &vertex, error)) return false;
     vertex +=
         "\nvoid main() {\n  arbiter_position = vec4(0.0);\n  arbiter_pointsize = 0.0;\n"
         "  arbiter_main();\n  gl_Position = arbiter_pixel;\n  gl_PointSize = 1.0;\n}\n";
@@ -229,7 +225,7 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, int max_atta
   const Renames renames = {{"gl_FragColor", "arbiter_fragdata[0]"},
                            {"gl_FragData", "arbiter_fragdata"},
                            {"gl_FragDepth", "arbiter_fragdepth"}};
-  if (!Adapt(t.fragment, renames, kFragmentGlobals, &fragment, error)) return false;
+  if (!AdaptMain(t.fragment, renames, kFragmentGlobals, &fragment, error)) return false;
   const size_t per_pass = static_cast<size_t>(max_attachments - 1);
   size_t next = 0;
   do {

@@ -6,6 +6,7 @@
 // shader that feeds its inputs from generic attributes (exec::kFragmentInputAttribs).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,21 @@
 #include "exec/program_rewrite.h"
 
 namespace arbiter::runtime::exec {
+
+// The text edits of the adaptation, shared with the target engines (target_adapt.h); they
+// work on identifiers and lines only, never on the phrasing of statements.
+using Renames = std::map<std::string, std::string>;
+// Replaces every identifier of `text` found in `renames` (comments included: harmless).
+std::string RenameIdentifiers(const std::string& text, const Renames& renames);
+// Drops every line that contains `needle`.
+std::string DropLines(const std::string& text, const std::string& needle);
+// Inserts `globals` after the leading preprocessor and default-precision lines (#version and
+// #extension must come before any declaration, ES precision before any float declaration).
+std::string InsertGlobals(const std::string& text, const std::string& globals);
+// The shader `text` with its `main` renamed `arbiter_main`, the identifiers of `renames`
+// replaced and `globals` inserted (InsertGlobals); false when it has no `void main()`.
+[[nodiscard]] bool AdaptMain(const std::string& text, const Renames& renames,
+                             const std::string& globals, std::string* out, std::string* error);
 
 // One draw of the GLSL engine: both shaders and what each attachment receives (an index into
 // RunPlan::outputs, or kAliveFlag).

@@ -3,7 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
+
+#include "arbiter/glstate/uniforms.h"
 
 namespace arbiter::runtime::exec {
 namespace {
@@ -84,6 +87,13 @@ bool VectorValue(const std::vector<StateRef>& refs, const arbvp::StateUniform& u
   return false;
 }
 
+void SetSamplers(const ExecGl& gl, GLuint program, const arbvp::BindingMap& map) {
+  for (const arbvp::SamplerBinding& s : map.samplers) {
+    const GLint location = gl.GetUniformLocation(program, s.name.c_str());
+    if (location >= 0) gl.Uniform1i(location, s.unit);
+  }
+}
+
 }  // namespace
 
 GLuint LinkGlslPass(const ExecGl& gl, const GlslPass& pass, const arbvp::BindingMap& map,
@@ -144,10 +154,7 @@ bool SetGlslUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& 
     }
     gl.Uniform4fv(location, p.size, data.data());
   }
-  for (const arbvp::SamplerBinding& s : map.samplers) {
-    const GLint location = gl.GetUniformLocation(program, s.name.c_str());
-    if (location >= 0) gl.Uniform1i(location, s.unit);
-  }
+  SetSamplers(gl, program, map);
   const std::vector<StateRef> refs = StateBindings(programs);
   for (const arbvp::StateUniform& u : map.state) {
     const GLint location = gl.GetUniformLocation(program, u.name.c_str());
@@ -165,6 +172,55 @@ bool SetGlslUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& 
     if (!found) {
       *error = fmt::format("no binding of the programs is '{}' (uniform {})", u.binding, u.name);
       return false;
+    }
+  }
+  return true;
+}
+
+bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& map,
+                       const arbvp::ExecInputs& inputs, std::string* error) {
+  for (const arbvp::ParameterArray& p : map.parameters) {
+    const GLint location = gl.GetUniformLocation(program, p.name.c_str());
+    if (location < 0) continue;  // optimised away
+    const arbvp::ProgramParameters& params =
+        p.target == arbvp::ProgramKind::Vertex ? inputs.vertex_params : inputs.fragment_params;
+    std::vector<float> data(static_cast<size_t>(p.size) * 4, 0.0f);
+    for (int i = 0; i < p.size; ++i) {
+      const std::string spelling = fmt::format("program.{}[{}]", p.local ? "local" : "env", i);
+      glstate::UniformData value;
+      if (!glstate::UniformValue(inputs.state, params, spelling, &value)) {
+        *error = fmt::format("glstate::UniformValue cannot evaluate '{}' ({})", spelling, p.name);
+        return false;
+      }
+      std::copy_n(value.data.begin(), 4, data.begin() + static_cast<ptrdiff_t>(i) * 4);
+    }
+    gl.Uniform4fv(location, p.size, data.data());
+  }
+  SetSamplers(gl, program, map);
+  for (const arbvp::StateUniform& u : map.state) {
+    const GLint location = gl.GetUniformLocation(program, u.name.c_str());
+    if (location < 0) continue;
+    glstate::UniformData value;
+    if (!glstate::UniformValue(inputs.state, inputs.vertex_params, u.binding, &value)) {
+      glstate::StateRef beyond;
+      if (!glstate::ParseStateSpelling(u.binding, &beyond)) {
+        *error = fmt::format("glstate::UniformValue cannot evaluate '{}' ({})", u.binding, u.name);
+        return false;
+      }
+      // A light or clip plane past the model's arrays (gl_state.h): GL's initial value
+      // (0, 0, 0, 0), which the interpreter and the ARB engine read too.
+      value = glstate::UniformData{};
+    }
+    const bool matrix = value.type == glstate::UniformType::Matrix;
+    if (matrix != (u.type == "mat4")) {
+      *error = fmt::format("glstate gives a {} for '{}', the uniform {} is a {}",
+                           matrix ? "mat4" : "vec4", u.binding, u.name, u.type);
+      return false;
+    }
+    if (matrix) {
+      gl.UniformMatrix4fv(location, 1, GL_FALSE, value.data.data());
+    } else {
+      gl.Uniform4fv(location, 1, value.data.data());
     }
   }
   return true;

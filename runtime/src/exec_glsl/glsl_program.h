@@ -27,4 +27,10 @@ GLuint LinkGlslPass(const ExecGl& gl, const GlslPass& pass, const arbvp::Binding
                                    const ArbPrograms& programs, const arbvp::ExecInputs& inputs,
                                    std::string* error);
 
+// The target engines' SetGlslUniforms: every value from its ARB spelling in `map` through
+// the host library (glstate::UniformValue), program.env/local arrays element by element, so
+// that verification tests the library a port uses.
+[[nodiscard]] bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& map,
+                                     const arbvp::ExecInputs& inputs, std::string* error);
+
 }  // namespace arbiter::runtime::exec

@@ -17,13 +17,6 @@
 namespace arbiter::runtime::exec {
 namespace {
 
-bool Check(const ExecGl& gl, const char* step, std::string* error) {
-  const GLenum code = gl.GetError();
-  if (code == GL_NO_ERROR) return true;
-  *error = fmt::format("{} raised {}", step, GlErrorName(code));
-  return false;
-}
-
 // As the ARB engine's SetFixedState, with the ARB program targets off (a current GLSL
 // program wins anyway) and the same colour clamping: on for a pair, off otherwise.
 void SetFixedState(const ExecGl& gl, RunMode mode) {
@@ -36,19 +29,6 @@ void SetFixedState(const ExecGl& gl, RunMode mode) {
   for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_POINT_SMOOTH, GL_POINT_SPRITE_ARB, GL_CULL_FACE,
                      GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_FOG}) {
     gl.Disable(cap);
-  }
-}
-
-// GLSL has one component of these registers (glsl_run.h).
-uint8_t GlslComponents(const arbvp::Binding& b) {
-  switch (b.result) {
-    case arbvp::ResultReg::FogCoord:
-    case arbvp::ResultReg::PointSize:
-      return 0x1;
-    case arbvp::ResultReg::FragDepth:
-      return 0x4;
-    default:
-      return 0xF;
   }
 }
 
@@ -72,17 +52,6 @@ CheckedTranslation Translate(const ArbPrograms& programs, const arbvp::EmitOptio
   return t;
 }
 
-// What decides a linked program: both texts and the attribute locations bound before
-// linking (LinkGlslPass).
-std::string LinkKey(const GlslPass& pass, const arbvp::BindingMap& map, const RunPlan& plan) {
-  std::string key = pass.vertex + '\0' + pass.fragment + '\0';
-  key += fmt::format("{} {}", static_cast<int>(plan.mode), plan.position_attrib);
-  for (const arbvp::AttributeBinding& a : map.attributes) {
-    key += fmt::format(" {}={}", a.name, a.location);
-  }
-  return key;
-}
-
 struct Run {
   const ExecGl& gl;
   const RunPlan& plan;
@@ -91,26 +60,14 @@ struct Run {
   const arbvp::ExecInputs& inputs;
   ProgramCache* cache;
 
-  // The linked program of `pass`, from the cache or linked now.
-  GLuint Link(const GlslPass& pass, std::string* error) const {
-    std::string key = LinkKey(pass, translation.bindings, plan);
-    GLuint program = cache->Find(key);
-    if (program != 0) return program;
-    program = LinkGlslPass(gl, pass, translation.bindings, plan, error);
-    if (program == 0) return 0;
-    const GLuint evicted = cache->Add(std::move(key), program);
-    if (evicted != 0) gl.DeleteProgram(evicted);
-    return program;
-  }
-
   bool Pass(const GlslPass& pass, int width, int height, Framebuffer* framebuffer,
             std::vector<std::vector<float>>* values, std::vector<float>* alive,
             std::string* error) const {
-    const GLuint program = Link(pass, error);
+    const GLuint program = LinkCached(gl, pass, translation.bindings, plan, cache, error);
     if (program == 0) return false;
     gl.UseProgram(program);
     bool ok = SetGlslUniforms(gl, program, translation.bindings, programs, inputs, error) &&
-              Check(gl, "setting the uniforms", error);
+              CheckGl(gl, "setting the uniforms", error);
     if (ok) {
       framebuffer->Begin(static_cast<int>(pass.attachments.size()));
       // Without a spare generic attribute the position is a uniform, set point by point.
@@ -118,14 +75,14 @@ struct Run {
                               ? gl.GetUniformLocation(program, kPixelAttribute)
                               : -1;
       DrawPoints(gl, plan, inputs, width, height, pixel);
-      ok = Check(gl, "drawing the points", error);
+      ok = CheckGl(gl, "drawing the points", error);
     }
     for (size_t a = 0; ok && a < pass.attachments.size(); ++a) {
       const int slot = pass.attachments[a];
       if (slot == kAliveFlag && !alive->empty()) continue;  // one pass says it
       framebuffer->Read(static_cast<int>(a),
                         slot == kAliveFlag ? alive : &(*values)[static_cast<size_t>(slot)]);
-      ok = Check(gl, "reading the framebuffer back", error);
+      ok = CheckGl(gl, "reading the framebuffer back", error);
     }
     gl.UseProgram(0);
     return ok;
@@ -133,6 +90,43 @@ struct Run {
 };
 
 }  // namespace
+
+bool CheckGl(const ExecGl& gl, const char* step, std::string* error) {
+  const GLenum code = gl.GetError();
+  if (code == GL_NO_ERROR) return true;
+  *error = fmt::format("{} raised {}", step, GlErrorName(code));
+  return false;
+}
+
+uint8_t GlslComponents(const arbvp::Binding& b) {
+  switch (b.result) {
+    case arbvp::ResultReg::FogCoord:
+    case arbvp::ResultReg::PointSize:
+      return 0x1;
+    case arbvp::ResultReg::FragDepth:
+      return 0x4;
+    default:
+      return 0xF;
+  }
+}
+
+// What decides a linked program: both texts and the attribute locations bound before
+// linking (LinkGlslPass).
+GLuint LinkCached(const ExecGl& gl, const GlslPass& pass, const arbvp::BindingMap& map,
+                  const RunPlan& plan, ProgramCache* cache, std::string* error) {
+  std::string key = pass.vertex + '\0' + pass.fragment + '\0';
+  key += fmt::format("{} {}", static_cast<int>(plan.mode), plan.position_attrib);
+  for (const arbvp::AttributeBinding& a : map.attributes) {
+    key += fmt::format(" {}={}", a.name, a.location);
+  }
+  GLuint program = cache->Find(key);
+  if (program != 0) return program;
+  program = LinkGlslPass(gl, pass, map, plan, error);
+  if (program == 0) return 0;
+  const GLuint evicted = cache->Add(std::move(key), program);
+  if (evicted != 0) gl.DeleteProgram(evicted);
+  return program;
+}
 
 bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const ArbPrograms& programs,
                         const arbvp::EmitOptions& emit, const arbvp::ExecInputs& inputs,
@@ -161,14 +155,14 @@ bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const Arb
 
   SetFixedState(gl, plan.mode);
   UploadGlState(gl, inputs.state);
-  if (!Check(gl, "setting the GL state", error)) return false;
+  if (!CheckGl(gl, "setting the GL state", error)) return false;
   std::vector<GLuint> textures;
   bool ok = UploadTextures(gl, inputs.textures, &textures, error) &&
-            Check(gl, "creating the textures", error);
+            CheckGl(gl, "creating the textures", error);
   if (ok) {
     Framebuffer framebuffer(gl);
     ok = framebuffer.Create(width, height, static_cast<int>(attachments), error) &&
-         Check(gl, "creating the framebuffer", error);
+         CheckGl(gl, "creating the framebuffer", error);
     std::vector<std::vector<float>> values(plan.outputs.size());
     std::vector<float> alive;
     const Run run{gl, plan, translation, programs, inputs, &cache->programs};
@@ -178,7 +172,7 @@ bool RunGlslTranslation(const ExecGl& gl, const ContextLimits& limits, const Arb
     if (ok) CollectResults(plan, values, alive, GlslComponents, results);
   }
   DeleteTextures(gl, &textures);
-  ok = ok && Check(gl, "cleaning up", error);
+  ok = ok && CheckGl(gl, "cleaning up", error);
   if (!ok) results->clear();
   return ok;
 }

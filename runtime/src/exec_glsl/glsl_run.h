@@ -11,6 +11,7 @@
 #include "exec/exec_gl.h"
 #include "exec/program_cache.h"
 #include "exec/program_rewrite.h"
+#include "exec_glsl/glsl_adapt.h"
 
 namespace arbiter::runtime::exec {
 
@@ -25,6 +26,14 @@ struct GlslCache {
   std::string error;
   ProgramCache programs{8};
 };
+
+// Shared with the target engines (target_run.h): a GL error after `step` as `error`; the
+// components GLSL carries of a result (x of the fog coordinate and point size, z of the
+// depth); and the linked program of `pass`, from `cache` or linked now (LinkGlslPass).
+[[nodiscard]] bool CheckGl(const ExecGl& gl, const char* step, std::string* error);
+uint8_t GlslComponents(const arbvp::Binding& b);
+GLuint LinkCached(const ExecGl& gl, const GlslPass& pass, const arbvp::BindingMap& map,
+                  const RunPlan& plan, ProgramCache* cache, std::string* error);
 
 // Translates `programs` (with the glslang self-check), adapts the shaders for readback
 // (glsl_adapt.h) and runs them on `inputs` in the current context. Results as

@@ -29,11 +29,11 @@ CheckedTranslation EmitTranslation(const arbvp::Program* vertex, const arbvp::Pr
   for (const auto& [program, source] :
        {std::pair{vertex, vertex_source}, {fragment, fragment_source}}) {
     if (!program) continue;
-    arbvp::Untranslatable u = arbvp::FindUntranslatable(*program);
+    arbvp::Untranslatable u = arbvp::FindUntranslatable(*program, options);
     if (u.what.empty()) continue;
     compiler::LineCol at = source ? source->Locate(u.range.begin) : compiler::LineCol{};
-    out.error = fmt::format("{}:{}: error: {}; arbiter cannot translate this program to GLSL 1.10",
-                            at.line, at.column, u.what);
+    out.error = fmt::format("{}:{}: error: {}; arbiter cannot translate this program to {}",
+                            at.line, at.column, u.what, arbvp::EmitTargetTitle(options.target));
     out.refused = true;
     return out;
   }

@@ -46,7 +46,8 @@ nlohmann::json VerdictToJson(const Verdict& v) {
           {"undefined", v.undefined},
           {"unstable", v.unstable},
           {"deviations", v.deviations},
-          {"disagreements", std::move(disagreements)}};
+          {"disagreements", std::move(disagreements)},
+          {"not_applicable", v.not_applicable}};
 }
 
 bool VerdictFromJson(const nlohmann::json& j, Verdict* v) {
@@ -58,6 +59,7 @@ bool VerdictFromJson(const nlohmann::json& j, Verdict* v) {
     v->undefined = j.at("undefined").get<std::map<std::string, size_t>>();
     v->unstable = j.at("unstable").get<size_t>();
     v->deviations = j.at("deviations").get<std::map<std::string, size_t>>();
+    v->not_applicable = j.at("not_applicable").get<std::map<std::string, std::string>>();
     v->disagreements.clear();
     for (const nlohmann::json& d : j.at("disagreements")) {
       v->disagreements.push_back(DisagreementFromJson(d));

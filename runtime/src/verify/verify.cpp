@@ -13,6 +13,7 @@
 #include "arbiter/arbvp/exec_io.h"
 #include "arbiter/arbvp/interpret.h"
 #include "exec/context.h"
+#include "exec_glsl/target_run.h"
 #include "verify/verdict_json.h"
 #include "worker/chunks.h"
 
@@ -83,7 +84,36 @@ std::vector<std::string> MesaEngines(const VerifyOptions& options, const VerifyS
   std::vector<std::string> engines;
   if (options.mesa_arb && !UsesNvOptions(subject)) engines.emplace_back(kEngineMesaArb);
   if (options.mesa_glsl) engines.emplace_back(kEngineMesaGlsl);
+  for (const TargetEngineInfo& t : kTargetEngines) {
+    if (std::find(options.targets.begin(), options.targets.end(), t.name) !=
+        options.targets.end()) {
+      engines.emplace_back(t.name);
+    }
+  }
   return engines;
+}
+
+// The engines of one worker: the compatibility context of mesa-arb and mesa-glsl, and one
+// context per target engine.
+struct Engines {
+  std::unique_ptr<ArbExecutor> executor;
+  std::map<std::string, std::unique_ptr<TargetEngine>> targets;
+};
+
+// The deviations of a target engine are mesa-glsl's (the same compiler runs the same
+// GLSL); on the ES engines also llvmpipe-cube-edge on every driver: OpenGL ES 3.0 filters
+// cube maps seamlessly (ES 3.0 section 3.8.9.1), across the face edges that GL 2.0 and the
+// interpreter clamp at.
+uint32_t Deviations(const std::string& engine, const VerifyOptions& options) {
+  const bool target = engine != kEngineMesaArb && engine != kEngineMesaGlsl;
+  uint32_t mask =
+      arbvp::ApplicableDeviations(target ? kEngineMesaGlsl : engine, options.exec.driver);
+  if (engine == kEngineMesaEs300 || engine == kEngineMesaEs100) {
+    for (const arbvp::DeviationInfo& d : arbvp::KnownDeviations()) {
+      if (d.name == "llvmpipe-cube-edge") mask |= static_cast<uint32_t>(d.bit);
+    }
+  }
+  return mask;
 }
 
 std::string MesaError(const VerifyOptions& options, const std::string& error) {
@@ -92,8 +122,7 @@ std::string MesaError(const VerifyOptions& options, const std::string& error) {
 }
 
 // One subject's verdict: the interpreter and the Mesa engines on every batch, compared.
-Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
-                  const VerifyOptions& options) {
+Verdict VerifyOne(Engines* engines, const VerifySubject& subject, const VerifyOptions& options) {
   Verdict verdict;
   verdict.name = subject.name;
   const Prepared p = Prepare(subject, options);
@@ -105,20 +134,32 @@ Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
   for (const std::string& engine : MesaEngines(options, subject)) {
     std::vector<std::vector<arbvp::VectorResult>> batches;
     std::string error;
+    std::string not_applicable;
+    ArbExecutor* executor = engines->executor.get();
+    auto target = engines->targets.find(engine);
     for (const arbvp::InputBatch& batch : p.batches) {
       std::vector<arbvp::VectorResult> results;
-      const bool ok =
-          engine == kEngineMesaArb
-              ? executor->Run(programs, batch.inputs, &results, &error)
-              : executor->RunTranslated(programs, options.emit, batch.inputs, &results, &error);
+      bool ok = false;
+      if (target != engines->targets.end()) {
+        ok = target->second->Run(programs, options.emit, batch.inputs, &results, &not_applicable,
+                                 &error);
+      } else if (engine == kEngineMesaArb) {
+        ok = executor->Run(programs, batch.inputs, &results, &error);
+      } else {
+        ok = executor->RunTranslated(programs, options.emit, batch.inputs, &results, &error);
+      }
       if (!ok) break;
       batches.push_back(std::move(results));
+    }
+    if (!not_applicable.empty()) {
+      verdict.not_applicable[engine] = not_applicable;
+      continue;
     }
     if (!error.empty()) {
       errors.push_back(engine + ": " + error);
       continue;
     }
-    const uint32_t applicable = arbvp::ApplicableDeviations(engine, options.exec.driver);
+    const uint32_t applicable = Deviations(engine, options);
     for (size_t b = 0; b < batches.size() && b < p.ref.size(); ++b) {
       CompareWithReference(p.ref[b], batches[b], engine, applicable, p.batches[b].name, &verdict);
     }
@@ -145,16 +186,34 @@ Verdict VerifyOne(ArbExecutor* executor, const VerifySubject& subject,
 WorkerJob ChunkJob(const std::vector<VerifySubject>& subjects, size_t first, size_t count,
                    const VerifyOptions& options) {
   return [&subjects, first, count, &options](std::string* payload, std::string* job_error) {
-    std::unique_ptr<ArbExecutor> executor = CreateArbExecutor(options.exec, job_error);
-    if (!executor) return false;
+    Engines engines;
+    if (options.mesa_arb || options.mesa_glsl) {
+      engines.executor = CreateArbExecutor(options.exec, job_error);
+      if (!engines.executor) return false;
+    }
+    for (const TargetEngineInfo& t : kTargetEngines) {
+      if (std::find(options.targets.begin(), options.targets.end(), t.name) ==
+          options.targets.end()) {
+        continue;
+      }
+      std::string error;
+      std::unique_ptr<TargetEngine> engine =
+          CreateTargetEngine(t.target, options.exec.driver, &error);
+      if (!engine) {
+        *job_error = fmt::format("{}: {}", t.name, error);
+        return false;
+      }
+      engines.targets[t.name] = std::move(engine);
+    }
     nlohmann::json out = nlohmann::json::array();
     for (size_t i = first; i < first + count; ++i) {
-      out.push_back(VerdictToJson(VerifyOne(executor.get(), subjects[i], options)));
+      out.push_back(VerdictToJson(VerifyOne(&engines, subjects[i], options)));
     }
     *payload = out.dump();
-    // The worker exits right after its job: the system frees the context faster than
-    // destroying it does (unmapping softpipe's buffers page by page).
-    (void)executor.release();
+    // The worker exits right after its job: the system frees the contexts faster than
+    // destroying them does (unmapping softpipe's buffers page by page).
+    (void)engines.executor.release();
+    for (auto& [name, engine] : engines.targets) (void)engine.release();
     return true;
   };
 }

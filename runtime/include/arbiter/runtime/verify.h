@@ -22,6 +22,21 @@ namespace arbiter::runtime {
 inline constexpr const char* kEngineRef = "ref";
 inline constexpr const char* kEngineMesaArb = "mesa-arb";
 inline constexpr const char* kEngineMesaGlsl = "mesa-glsl";
+// The target engines (docs/verify.md): each target's translation, state as uniforms fed
+// through the binding map and the host library (glstate), on an EGL context of its API.
+inline constexpr const char* kEngineMesaGlsl330 = "mesa-glsl330";  // desktop 3.3 core profile
+inline constexpr const char* kEngineMesaEs300 = "mesa-es300";      // OpenGL ES 3.0
+inline constexpr const char* kEngineMesaEs100 = "mesa-es100";      // OpenGL ES 2.0
+// The target engines and the translation target each runs.
+struct TargetEngineInfo {
+  const char* name;
+  arbvp::EmitTarget target;
+};
+inline constexpr TargetEngineInfo kTargetEngines[] = {
+    {kEngineMesaGlsl330, arbvp::EmitTarget::Glsl330},
+    {kEngineMesaEs300, arbvp::EmitTarget::Es300},
+    {kEngineMesaEs100, arbvp::EmitTarget::Es100},
+};
 
 struct VerifyOptions {
   ExecOptions exec;
@@ -33,6 +48,9 @@ struct VerifyOptions {
   bool mesa_arb = true;
   bool mesa_glsl = true;
   arbvp::EmitOptions emit;  // the translation mesa-glsl runs (a test-only mutation included)
+  // The target engines to run (kTargetEngines' names), with emit's mutation; always on EGL
+  // (OSMesa makes no core or ES context), whatever exec.backend says.
+  std::vector<std::string> targets;
 };
 
 // One program, or a vertex + fragment pair, checked without errors.
@@ -68,6 +86,9 @@ struct Verdict {
   size_t unstable = 0;                       // within rounding of a discontinuity
   std::map<std::string, size_t> deviations;  // known Mesa deviation -> components
   std::vector<Disagreement> disagreements;
+  // Engine -> why it did not run the program: its target refuses a construct (the
+  // diagnostic names it and the target). Not an error.
+  std::map<std::string, std::string> not_applicable;
 };
 
 // Verifies every subject, in worker processes (options.jobs at a time); verdicts in subject

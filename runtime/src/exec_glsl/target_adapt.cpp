@@ -1,0 +1,332 @@
+// Target readback adaptation: see target_adapt.h. Like glsl_adapt.cpp, the translation is
+// edited at the level of identifiers and whole lines only. What is relied on: `void main()`,
+// the names the binding map gives each result and input, the declaration of a fragment
+// output as `out vec4 NAME;` on its own line, and the comment that marks the epilogue's
+// vertex-colour clamp (dropped for a vertex program alone, whose results the other engines
+// report unclamped).
+#include "exec_glsl/target_adapt.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+namespace arbiter::runtime::exec {
+namespace {
+
+using arbvp::Binding;
+using arbvp::ResultReg;
+
+constexpr const char* kClampMarker = "// GL clamps the vertex colours";
+
+// The first identifier of a GLSL expression from the binding map ("arb_fogcoord" of
+// "vec4(arb_fogcoord, 0.0, 0.0, 1.0)"), skipping the constructor.
+std::string FirstName(const std::string& glsl) {
+  size_t i = 0;
+  if (glsl.rfind("vec4(", 0) == 0) i = 5;
+  size_t end = i;
+  while (end < glsl.size() &&
+         (std::isalnum(static_cast<unsigned char>(glsl[end])) || glsl[end] == '_')) {
+    ++end;
+  }
+  return glsl.substr(i, end - i);
+}
+
+// The map's GLSL expression of result `b` of a `kind` program.
+bool ResultGlsl(const arbvp::BindingMap& map, const Binding& b, arbvp::ProgramKind kind,
+                std::string* glsl, std::string* error) {
+  const std::string name = arbvp::BindingName(b, kind);
+  for (const arbvp::RegisterMapping& m : map.outputs) {
+    if (m.binding == name && m.stage == kind) {
+      *glsl = m.glsl;
+      return true;
+    }
+  }
+  *error = fmt::format("the binding map lists no output for {}", name);
+  return false;
+}
+
+// The attachment value of a result held in `expr` (after the renames): GLSL has one
+// component of the fog coordinate and point size (x) and of the depth (z).
+std::string AsVec4(const Binding& b, const std::string& expr) {
+  switch (b.result) {
+    case ResultReg::FogCoord:
+    case ResultReg::PointSize:
+    case ResultReg::ClipDistance:
+      return fmt::format("vec4({}, 0.0, 0.0, 0.0)", expr);
+    case ResultReg::FragDepth:
+      return fmt::format("vec4(0.0, 0.0, {}, 0.0)", expr);
+    default:
+      return expr;
+  }
+}
+
+// Points are point sprites on core and ES contexts: Mesa rasterises a quad of four equal
+// vertices, and interpolating across it turns an infinite varying into NaN (inf - inf).
+// Every varying of a run is therefore `flat` where the dialect has it (not ES 1.00).
+std::string VertexIn(const TargetDialect& d) { return d.legacy_io ? "attribute" : "in"; }
+std::string VertexOut(const TargetDialect& d) { return d.legacy_io ? "varying" : "flat out"; }
+std::string FragmentIn(const TargetDialect& d) { return d.legacy_io ? "varying" : "flat in"; }
+
+// The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`)
+// made flat, where the dialect has it.
+std::string MakeFlat(const std::string& text, const TargetDialect& d, const char* keyword,
+                     const std::string& name) {
+  if (d.legacy_io) return text;
+  std::string out;
+  size_t begin = 0;
+  while (begin < text.size()) {
+    size_t end = text.find('\n', begin);
+    end = end == std::string::npos ? text.size() : end + 1;
+    const std::string line = text.substr(begin, end - begin);
+    for (const char* type : {" vec4 ", " float "}) {
+      if (line.rfind(keyword + std::string(type) + name + ";", 0) == 0) {
+        out += "flat ";
+        break;
+      }
+    }
+    out += line;
+    begin = end;
+  }
+  return out;
+}
+
+// The fragment shader's inputs: the binding map's, and the fog coordinate that a fog option
+// reads without the program naming it (the map lists only what the program reads; as of
+// this writing the emitter's fog epilogue reads `arb_fogcoord` unlisted).
+std::vector<arbvp::RegisterMapping> FragmentInputs(const CheckedTranslation& t) {
+  std::vector<arbvp::RegisterMapping> inputs;
+  bool fog = false;
+  for (const arbvp::RegisterMapping& m : t.bindings.inputs) {
+    if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0) continue;
+    inputs.push_back(m);
+    fog = fog || m.binding == "fragment.fogcoord";
+  }
+  if (!fog && t.fragment.find(" float arb_fogcoord;") != std::string::npos) {
+    inputs.push_back(
+        {"fragment.fogcoord", "vec4(arb_fogcoord, 0.0, 0.0, 1.0)", arbvp::ProgramKind::Fragment});
+  }
+  return inputs;
+}
+
+// The names of the fragment shader's varyings.
+std::set<std::string> FragmentVaryings(const CheckedTranslation& t) {
+  std::set<std::string> names;
+  for (const arbvp::RegisterMapping& m : FragmentInputs(t)) names.insert(FirstName(m.glsl));
+  return names;
+}
+
+// The fragment shader's colour outputs 0..count-1, and the statement that writes one.
+std::string AttachmentDeclarations(const TargetDialect& d, size_t count) {
+  if (d.legacy_io) return "";
+  std::string out;
+  for (size_t k = 0; k < count; ++k) {
+    out += fmt::format("layout(location = {0}) out vec4 arbiter_att{0};\n", k);
+  }
+  return out;
+}
+std::string Attachment(const TargetDialect& d, size_t k) {
+  return d.legacy_io ? fmt::format("gl_FragData[{}]", k) : fmt::format("arbiter_att{}", k);
+}
+
+// The header of a generated (or adapted) fragment shader: ES 1.00 needs EXT_draw_buffers
+// for more than one attachment.
+std::string FragmentHeader(const TargetDialect& d) {
+  if (!d.legacy_io) return d.header;
+  std::string header = d.header;
+  header.insert(header.find('\n') + 1, "#extension GL_EXT_draw_buffers : require\n");
+  return header;
+}
+
+std::string PixelDeclaration(const RunPlan& plan, const TargetDialect& d) {
+  return plan.position_attrib >= 0 ? VertexIn(d) + " vec4 arbiter_pixel;\n"
+                                   : "uniform vec4 arbiter_pixel;\n";
+}
+
+const Renames kPositionRenames = {{"gl_Position", "arbiter_position"},
+                                  {"gl_PointSize", "arbiter_pointsize"}};
+constexpr const char* kPositionGlobals = "vec4 arbiter_position;\nfloat arbiter_pointsize;\n";
+constexpr const char* kPositionInit =
+    "  arbiter_position = vec4(0.0);\n  arbiter_pointsize = 0.0;\n";
+constexpr const char* kPositionSet = "  gl_Position = arbiter_pixel;\n  gl_PointSize = 1.0;\n";
+
+// A vertex shader alone: every result through the varyings arbiter_out<k>, up to
+// max_attachments a pass, to a generated fragment shader.
+bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, const TargetDialect& d,
+                int max_attachments, std::vector<GlslPass>* passes, std::string* error) {
+  const std::string base = DropLines(t.vertex, kClampMarker);
+  const size_t per_pass = static_cast<size_t>(std::clamp(max_attachments, 1, 8));
+  for (size_t first = 0; first < plan.outputs.size(); first += per_pass) {
+    GlslPass pass;
+    std::string outs;
+    std::string ins;
+    std::string copies;
+    std::string reads;
+    for (size_t s = first; s < plan.outputs.size() && s < first + per_pass; ++s) {
+      const size_t k = s - first;
+      const Binding& b = plan.outputs[s].binding;
+      std::string glsl;
+      if (!ResultGlsl(t.bindings, b, arbvp::ProgramKind::Vertex, &glsl, error)) return false;
+      outs += fmt::format("{} vec4 arbiter_out{};\n", VertexOut(d), k);
+      ins += fmt::format("{} vec4 arbiter_out{};\n", FragmentIn(d), k);
+      copies += fmt::format("  arbiter_out{} = {};\n", k,
+                            AsVec4(b, RenameIdentifiers(glsl, kPositionRenames)));
+      reads += fmt::format("  {} = arbiter_out{};\n", Attachment(d, k), k);
+      pass.attachments.push_back(static_cast<int>(s));
+    }
+    if (!AdaptMain(base, kPositionRenames, kPositionGlobals + PixelDeclaration(plan, d) + outs,
+                   &pass.vertex, error)) {
+      return false;
+    }
+    pass.vertex += fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}{}}}\n", kPositionInit,
+                               kPositionSet, copies);
+    pass.fragment = FragmentHeader(d) + ins + AttachmentDeclarations(d, pass.attachments.size()) +
+                    "\nvoid main() {\n" + reads + "}\n";
+    passes->push_back(std::move(pass));
+  }
+  return true;
+}
+
+// The generated attribute that feeds fragment input `binding` (fragment programs alone).
+bool FragmentInputSource(const std::string& binding, std::string* attribute) {
+  if (binding == "fragment.color" || binding == "fragment.color.primary") {
+    *attribute = "arbiter_in_color";
+  } else if (binding == "fragment.color.secondary") {
+    *attribute = "arbiter_in_secondary";
+  } else if (binding == "fragment.fogcoord") {
+    *attribute = "arbiter_in_fogcoord";
+  } else if (binding == "fragment.texcoord") {
+    *attribute = "arbiter_in_texcoord0";
+  } else if (binding.rfind("fragment.texcoord[", 0) == 0) {
+    const int k = std::atoi(binding.c_str() + 18);
+    if (k < 0 || k >= arbvp::kMaxTextureCoords) return false;
+    *attribute = fmt::format("arbiter_in_texcoord{}", k);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// The vertex shader that feeds a fragment shader alone: each varying the binding map lists
+// as a fragment input, from its generated attribute (FragmentInputAttributes).
+bool PassThroughVertex(const CheckedTranslation& t, const TargetDialect& d, std::string* out,
+                       std::string* error) {
+  std::string text = d.header;
+  for (const GeneratedAttribute& a : FragmentInputAttributes()) {
+    text += fmt::format("{} vec4 {};\n", VertexIn(d), a.name);
+  }
+  std::string copies;
+  std::set<std::string> declared;
+  for (const arbvp::RegisterMapping& m : FragmentInputs(t)) {
+    const std::string name = FirstName(m.glsl);
+    std::string attribute;
+    if (name.empty() || !FragmentInputSource(m.binding, &attribute)) {
+      *error = fmt::format("no generated input feeds fragment input {} ({})", m.binding, m.glsl);
+      return false;
+    }
+    if (!declared.insert(name).second) continue;
+    // A varying the map wraps in a constructor is a float (the fog coordinate).
+    const bool scalar = m.glsl != name;
+    text += fmt::format("{} {} {};\n", VertexOut(d), scalar ? "float" : "vec4", name);
+    copies += fmt::format("  {} = {}{};\n", name, attribute, scalar ? ".x" : "");
+  }
+  *out = text + "\nvoid main() {\n  gl_Position = arbiter_in_position;\n  gl_PointSize = 1.0;\n" +
+         copies + "}\n";
+  return true;
+}
+
+// The fragment shader's passes: up to max - 1 results and the alive flag each.
+bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const TargetDialect& d,
+                  int max_attachments, std::vector<GlslPass>* passes, std::string* error) {
+  std::string vertex;
+  const std::set<std::string> varyings = FragmentVaryings(t);
+  if (plan.mode == RunMode::Fragment) {
+    if (!PassThroughVertex(t, d, &vertex, error)) return false;
+  } else {
+    std::string base = t.vertex;
+    for (const std::string& name : varyings) base = MakeFlat(base, d, "out", name);
+    if (!AdaptMain(base, kPositionRenames, kPositionGlobals + PixelDeclaration(plan, d), &vertex,
+                   error)) {
+      return false;
+    }
+    vertex +=
+        fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}}}\n", kPositionInit, kPositionSet);
+  }
+  // Every fragment output the map names becomes a global.
+  std::string fragment = t.fragment;
+  for (const std::string& name : varyings) fragment = MakeFlat(fragment, d, "in", name);
+  Renames renames = {{"gl_FragColor", "arbiter_fragdata[0]"},
+                     {"gl_FragData", "arbiter_fragdata"},
+                     {"gl_FragDepth", "arbiter_fragdepth"}};
+  std::string globals = "vec4 arbiter_fragdata[8];\nfloat arbiter_fragdepth;\n";
+  std::string init =
+      "  for (int i = 0; i < 8; ++i) arbiter_fragdata[i] = vec4(0.0);\n"
+      "  arbiter_fragdepth = 0.0;\n";
+  for (const arbvp::RegisterMapping& m : t.bindings.outputs) {
+    if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0) continue;
+    const std::string name = FirstName(m.glsl);
+    if (renames.count(name) != 0) continue;
+    fragment = DropLines(fragment, fmt::format("out vec4 {};", name));
+    renames[name] = "arbiter_" + name;
+    globals += fmt::format("vec4 arbiter_{};\n", name);
+    init += fmt::format("  arbiter_{} = vec4(0.0);\n", name);
+  }
+  std::string adapted;
+  if (!AdaptMain(fragment, renames, globals, &adapted, error)) return false;
+  if (d.legacy_io) adapted = FragmentHeader(d) + adapted.substr(adapted.find('\n') + 1);
+  const size_t per_pass = static_cast<size_t>(std::max(max_attachments - 1, 1));
+  size_t next = 0;
+  do {
+    GlslPass pass;
+    pass.vertex = vertex;
+    std::string copies;
+    for (; next < plan.outputs.size() && pass.attachments.size() < per_pass; ++next) {
+      const Binding& b = plan.outputs[next].binding;
+      std::string glsl;
+      if (!ResultGlsl(t.bindings, b, arbvp::ProgramKind::Fragment, &glsl, error)) return false;
+      copies += fmt::format("  {} = {};\n", Attachment(d, pass.attachments.size()),
+                            AsVec4(b, RenameIdentifiers(glsl, renames)));
+      pass.attachments.push_back(static_cast<int>(next));
+    }
+    // A discard in arbiter_main() ends the invocation: the flag stays (0,0,0,0).
+    copies += fmt::format("  {} = vec4(1.0);\n", Attachment(d, pass.attachments.size()));
+    pass.attachments.push_back(kAliveFlag);
+    pass.fragment = adapted + AttachmentDeclarations(d, pass.attachments.size()) +
+                    fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}}}\n", init, copies);
+    passes->push_back(std::move(pass));
+  } while (next < plan.outputs.size());
+  return true;
+}
+
+}  // namespace
+
+TargetDialect DialectOf(arbvp::EmitTarget target) {
+  TargetDialect d;
+  d.target = target;
+  switch (target) {
+    case arbvp::EmitTarget::Es300:
+      d.header = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+      break;
+    case arbvp::EmitTarget::Es100:
+      d.legacy_io = true;
+      d.header = "#version 100\nprecision highp float;\nprecision highp int;\n";
+      break;
+    default:
+      d.header = "#version 330 core\n";
+      break;
+  }
+  return d;
+}
+
+bool PlanTargetPasses(const RunPlan& plan, const CheckedTranslation& translation,
+                      const TargetDialect& dialect, int max_attachments,
+                      std::vector<GlslPass>* passes, std::string* error) {
+  passes->clear();
+  if (plan.mode == RunMode::Vertex) {
+    return PlanVertex(plan, translation, dialect, max_attachments, passes, error);
+  }
+  return PlanFragment(plan, translation, dialect, max_attachments, passes, error);
+}
+
+}  // namespace arbiter::runtime::exec

@@ -1,0 +1,35 @@
+// Adapting a target translation (glsl330, es300, es100: state as uniforms, named varyings
+// and outputs) for readback, the way glsl_adapt.h adapts the GLSL 1.10 one: its `main`
+// becomes `arbiter_main`, and a generated `main` calls it and copies the results to colour
+// attachments. What a result is called is read from the translation's binding map
+// (BindingMap::outputs, ::inputs), not from the emitter's naming conventions.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "arbiter/arbvp/emit.h"
+#include "arbiter/runtime/translate.h"
+#include "exec/program_rewrite.h"
+#include "exec_glsl/glsl_adapt.h"
+
+namespace arbiter::runtime::exec {
+
+// The shading-language dialect of a target engine's generated shaders.
+struct TargetDialect {
+  arbvp::EmitTarget target = arbvp::EmitTarget::Glsl330;
+  // GLSL ES 1.00: attribute/varying and gl_FragData (with GL_EXT_draw_buffers) instead of
+  // in/out and layout-qualified fragment outputs.
+  bool legacy_io = false;
+  std::string header;  // "#version 330 core\n", with the default precisions in ES
+};
+TargetDialect DialectOf(arbvp::EmitTarget target);
+
+// Plans the passes for `plan` (from PlanRun on the same programs) and `translation` (of
+// dialect.target). False (with `error`) when the translation or its binding map does not
+// have the expected shape.
+[[nodiscard]] bool PlanTargetPasses(const RunPlan& plan, const CheckedTranslation& translation,
+                                    const TargetDialect& dialect, int max_attachments,
+                                    std::vector<GlslPass>* passes, std::string* error);
+
+}  // namespace arbiter::runtime::exec
