@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "arbiter/arbvp/emit.h"
 #include "arbiter/compiler/source.h"
 #include "arbiter/runtime/shader_test.h"
 #include "cli.h"
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 
 struct RunCommandOptions {
   std::vector<std::string> files;
-  bool translate = false;
+  std::string translate;  // "": run ARB programs as ARB; else the translation's target
   MesaOptions mesa;
   int jobs = 0;
   std::string format = "text";
@@ -110,7 +111,22 @@ int RunTests(const RunCommandOptions& options) {
     return static_cast<int>(Exit::Usage);
   }
   run.exec.driver = options.mesa.driver;
-  run.translate = options.translate;
+  run.translate = !options.translate.empty();
+  std::string title;  // the translation's dialect, in the count line
+  if (run.translate) {
+    // The GLSL targets a GL or GL ES context runs; vk450 (and spirv, hlsl, msl) need Vulkan,
+    // Direct3D or Metal.
+    if (!arbvp::LookupEmitTarget(options.translate, &run.emit.target) ||
+        run.emit.target == arbvp::EmitTarget::Vk450) {
+      fmt::print(stderr,
+                 "arbiter: error: --translate={}: run translates to glsl110, glsl120, glsl330, "
+                 "es100 or es300\n",
+                 options.translate);
+      return static_cast<int>(Exit::Usage);
+    }
+    if (arbvp::UsesStateUniforms(run.emit)) run.emit.state = arbvp::StateSource::Uniforms;
+    title = std::string(arbvp::EmitTargetTitle(run.emit.target));
+  }
   run.jobs = options.jobs > 0 ? options.jobs
                               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   run.limits.timeout_ms = options.mesa.timeout_ms;
@@ -155,7 +171,8 @@ int RunTests(const RunCommandOptions& options) {
     nlohmann::ordered_json j;
     j["driver"] = options.mesa.driver;
     j["backend"] = options.mesa.backend;
-    j["translate"] = options.translate;
+    j["translate"] = run.translate;
+    if (run.translate) j["target"] = options.translate;
     nlohmann::ordered_json tests = nlohmann::ordered_json::array();
     for (const runtime::ShaderTestResult& r : results) tests.push_back(ResultJson(r));
     j["tests"] = std::move(tests);
@@ -168,7 +185,9 @@ int RunTests(const RunCommandOptions& options) {
     for (const runtime::ShaderTestResult& r : results) PrintResult(r);
     fmt::print("{} passed, {} failed, {} skipped ({} via {}{})\n", passed, failed, skipped,
                options.mesa.driver, options.mesa.backend,
-               options.translate ? ", ARB translated to GLSL" : "");
+               !run.translate                   ? ""
+               : options.translate == "glsl110" ? ", ARB translated to GLSL"
+                                                : ", ARB translated to " + title);
   }
   if (failed > 0) exit = Worse(exit, Exit::Rejected);
   for (const runtime::ShaderTestResult& r : results) {
@@ -176,7 +195,10 @@ int RunTests(const RunCommandOptions& options) {
   }
   if (!options.junit.empty()) {
     std::string error;
-    const std::string suite = options.translate ? "arbiter run --translate" : "arbiter run";
+    const std::string suite = !run.translate ? "arbiter run"
+                              : options.translate == "glsl110"
+                                  ? "arbiter run --translate"
+                                  : "arbiter run --translate=" + options.translate;
     if (!compiler::WriteFileAtomically(options.junit, runtime::JunitXml(results, suite), &error)) {
       fmt::print(stderr, "arbiter: error: {}: {}\n", options.junit, error);
       exit = Worse(exit, Exit::Environment);
@@ -197,8 +219,10 @@ std::function<int()> AddRunCommand(CLI::App* app) {
       "crashes or hangs fails alone. Exit 1 when a test fails. The format and arbiter's "
       "extensions: docs/run.md.");
   cmd->add_option("files", options->files, "shader tests (directories are searched)")->required();
-  cmd->add_flag("--translate", options->translate,
-                "run ARB programs as arbiter's GLSL translation instead of Mesa's ARB path");
+  cmd->add_flag("--translate{glsl110}", options->translate,
+                "run ARB programs as arbiter's translation to this target instead of Mesa's ARB "
+                "path: glsl110 (default), glsl120, glsl330, es100, es300; the targets without "
+                "built-in state get the GL state the test sets as uniforms");
   AddMesaOptions(cmd, &options->mesa, "per test");
   AddJobsOption(cmd, &options->jobs, "worker processes");
   AddFormatOption(cmd, &options->format, {"text", "json"});

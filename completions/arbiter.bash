@@ -78,7 +78,7 @@ _arbiter() {
                --format --color --stage -j --jobs --timeout --memory-limit"
       files="$arb" ;;
     run)
-      options="-h --help --translate --backend --driver -j --jobs --format --junit --png
+      options="-h --help --translate --translate= --backend --driver -j --jobs --format --junit --png
                --timeout --memory-limit"
       files="shader_test" ;;
   esac

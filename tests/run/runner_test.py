@@ -228,6 +228,43 @@ def main():
               report["tests"][1]["message"][1].strip() ==
               "Expected: 0.000000 1.000000 0.000000 1.000000", out)
 
+        # --translate=T for the targets without built-in state: the GL state the commands set
+        # reaches the translation as uniforms (glstate), with GL's own transformations: the
+        # light position by the modelview matrix, the fog colour clamped. p = (0.5, 0.5, 0, 1)
+        # (0.25 moved by x + 0.25), f = (1, 0.25, 0, 0.5); p * f + env[3] = (0.6, 0.325, 0.3,
+        # 0.9) on the right; on the left (local[0].x = 1) the current vertex.color.
+        state = os.path.join(tmp, "state-uniforms.shader_test")
+        with open(state, "w") as f:
+            f.write("[require]\nGL_ARB_vertex_program\n\n[vertex program]\n!!ARBvp1.0\n"
+                    "PARAM p = state.light[0].position;\nPARAM f = state.fog.color;\n"
+                    "TEMP t, d;\nMOV result.position, vertex.position;\nMUL t, p, f;\n"
+                    "ADD t, t, program.env[3];\nSUB d, vertex.color, t;\n"
+                    "MAD result.color, program.local[0].x, d, t;\nEND\n\n[test]\n"
+                    "matrix GL_MODELVIEW 1 0 0 0  0 1 0 0  0 0 1 0  0.25 0 0 1\n"
+                    "light 0 GL_POSITION float 0.25 0.5 0 1\n"
+                    "matrix GL_MODELVIEW 1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n"
+                    "fog GL_FOG_COLOR float 1.5 0.25 -1 0.5\n"
+                    "parameter env_vp 3 (0.1, 0.2, 0.3, 0.4)\ncolor 0.2 0.4 0.6 0.8\n"
+                    "parameter local_vp 0 (1, 0, 0, 0)\ndraw rect -1 -1 1 2\n"
+                    "parameter local_vp 0 (0, 0, 0, 0)\ndraw rect 0 -1 1 2\n"
+                    "probe rgba 200 100 0.6 0.325 0.3 0.9\n"
+                    "probe rgba 50 100 0.2 0.4 0.6 0.8\n")
+        for options in ([], ["--translate"], ["--translate=glsl330"], ["--translate=es300"]):
+            code, out, _ = run([*options, "state-uniforms.shader_test"], tmp)
+            check(f"state uniforms {options}", code == 0 and "PASS" in out, out)
+        # A program the target cannot express is skipped with the refusal, not failed.
+        tex1d = os.path.join(tmp, "tex1d.shader_test")
+        with open(tex1d, "w") as f:
+            f.write("[require]\nGL_ARB_fragment_program\n\n[fragment program]\n!!ARBfp1.0\n"
+                    "TEX result.color, fragment.texcoord[0], texture[0], 1D;\nEND\n\n[test]\n"
+                    "texture rgbw 1D 0\ndraw rect -1 -1 2 2\n")
+        code, out, _ = run(["--translate=es300", "tex1d.shader_test"], tmp)
+        check("es300 refusal", code == 0 and "SKIP tex1d.shader_test" in out and
+              "the translation to GLSL ES 3.00 refuses the program" in out and
+              "1D" in out and "0 passed, 0 failed, 1 skipped" in out, out)
+        code, out, err = run(["--translate=vk450", "tex1d.shader_test"], tmp)
+        check("vk450 refused", code == 2 and "--translate=vk450: run translates to" in err, err)
+
         # The output does not depend on the number of workers.
         names = sorted(n for n in CASES if n != "glsl-hang.shader_test")
         outputs = {run(["-j", str(j), *names], tmp)[1] for j in (1, 3)}

@@ -184,7 +184,9 @@ void Session::Execute(const ShaderTestLine& command) {
     if (words.size() < lead.size() || !std::equal(lead.begin(), lead.end(), words.begin())) {
       continue;
     }
-    entry.run(this, Args(words.begin() + static_cast<std::ptrdiff_t>(lead.size()), words.end()));
+    const Args args(words.begin() + static_cast<std::ptrdiff_t>(lead.size()), words.end());
+    entry.run(this, args);
+    TrackState(std::string(entry.words), args);  // the same state in state_ (--translate)
     return;
   }
   Error(fmt::format("unknown command '{}'", command.text));

@@ -64,13 +64,18 @@ void Session::DrawRect(float x, float y, float w, float h, const float* tex) {
     std::copy(&t[0][0], &t[0][0] + 8, &texcoords[0][0]);
   }
   // piglit feeds piglit_vertex when the current GLSL program has it, else gl_Vertex.
-  const bool generic = program_ != 0 && gl_.GetAttribLocation(program_, "piglit_vertex") >= 0;
+  // A translation reading state from uniforms reads vertex.position at 0 and
+  // vertex.texcoord[0] where its binding map says.
+  const bool generic =
+      StateUniforms() || (program_ != 0 && gl_.GetAttribLocation(program_, "piglit_vertex") >= 0);
+  const int tex_location = StateUniforms() ? AttributeLocation("vertex.texcoord[0]") : 1;
   if (generic) {
     gl_.VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, verts);
     gl_.EnableVertexAttribArray(0);
-    if (tex != nullptr) {
-      gl_.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 0, texcoords);
-      gl_.EnableVertexAttribArray(1);
+    if (tex != nullptr && tex_location >= 0) {
+      gl_.VertexAttribPointer(static_cast<GLuint>(tex_location), 2, GL_FLOAT, GL_FALSE, 0,
+                              texcoords);
+      gl_.EnableVertexAttribArray(static_cast<GLuint>(tex_location));
     }
   } else {
     gl_.VertexPointer(4, GL_FLOAT, 0, verts);
@@ -84,7 +89,7 @@ void Session::DrawRect(float x, float y, float w, float h, const float* tex) {
   gl_.DrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   if (generic) {
     gl_.DisableVertexAttribArray(0);
-    gl_.DisableVertexAttribArray(1);
+    if (tex_location >= 0) gl_.DisableVertexAttribArray(static_cast<GLuint>(tex_location));
   } else {
     gl_.DisableClientState(GL_VERTEX_ARRAY);
     gl_.DisableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -147,7 +152,15 @@ void Session::DrawArrays(const std::vector<std::string>& a) {
     const float* data = c.values.data();
     int texunit = -1;
     int generic = -1;
-    if (c.name == "gl_Vertex") {
+    if (StateUniforms() && !FixedFunctionBinding(c.name).empty()) {
+      // The translation reads these inputs from the generic attributes its binding map names.
+      const std::string binding = FixedFunctionBinding(c.name);
+      const int location = binding == "vertex.position" ? 0 : AttributeLocation(binding);
+      if (location < 0) continue;  // an input the program does not read
+      gl_.VertexAttribPointer(static_cast<GLuint>(location), c.size, GL_FLOAT, GL_FALSE, 0, data);
+      gl_.EnableVertexAttribArray(static_cast<GLuint>(location));
+      attribs.push_back(static_cast<GLuint>(location));
+    } else if (c.name == "gl_Vertex") {
       gl_.VertexPointer(c.size, GL_FLOAT, 0, data);
       client_states.push_back(GL_VERTEX_ARRAY);
     } else if (c.name == "gl_Normal") {

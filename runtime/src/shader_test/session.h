@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "arbiter/arbvp/check.h"
+#include "arbiter/glstate/gl_state.h"
 #include "arbiter/runtime/shader_test.h"
 #include "exec/context.h"
 #include "exec/exec_gl.h"
@@ -53,6 +54,10 @@ struct ParameterKey {
   }
 };
 
+// The ARB spelling of a fixed-function [vertex data] column ("gl_MultiTexCoord2" ->
+// "vertex.texcoord[2]"), or "" (translate_state.cpp).
+std::string FixedFunctionBinding(const std::string& column);
+
 class Session {
  public:
   Session(const exec::ExecGl& gl, const ContextInfo& info, Window* window,
@@ -78,6 +83,13 @@ class Session {
   bool CheckArb(arbvp::ProgramKind kind, const ShaderTestSource& source,
                 std::unique_ptr<compiler::SourceFile>* file, arbvp::CheckResult* checked);
   void UploadTranslationState();  // before each draw under --translate
+  // translate_state.cpp: --translate to a target that reads state from uniforms
+  // (--translate=glsl330, es300, ...).
+  bool StateUniforms() const { return translated_ && bindings_.state_uniforms; }
+  int AttributeLocation(const std::string& binding) const;  // -1: the program has none
+  std::string StandInFragmentShader(const std::string& vertex) const;
+  void UploadStateUniforms();
+  void TrackState(const std::string& command, const std::vector<std::string>& words);
   void AddGlslDiagnostics(const std::string& stage, const std::string& text, int line);
   // The "#version N\n" shader_runner puts before a shader without one ("" for 1.10), and the
   // shader text with it.
@@ -126,6 +138,10 @@ class Session {
   std::vector<GLuint> textures_;
   std::map<ParameterKey, std::array<float, 4>> parameters_;
   arbvp::BindingMap bindings_;  // the translation's, under --translate
+  // The GL state the commands set, as a port keeps it (docs/glstate.md): under a --translate
+  // target without built-in state it reaches the translation only through its uniforms.
+  glstate::GlState state_;
+  std::map<std::string, std::array<float, 4>> current_;  // current attributes by ARB spelling
   bool translated_ = false;
 };
 
