@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """docs/gallery.md shows every effect of corpus/exec/gallery: each effect has an ARB and a
 GLSL shader test with the same [test] section, and the page shows both pictures, which exist
-in docs/gallery/ and are what `arbiter run --png` draws now (softpipe through OSMesa).
+in docs/gallery/ and are what `arbiter run --png` draws now (softpipe through OSMesa); the ARB
+pair's GLSL 3.30 core translation (`--translate=glsl330`, state as uniforms) passes too and
+draws the pictures of docs/gallery/glsl330/.
 
   gallery_doc_test.py ARBITER SOURCE_DIR
 """
@@ -32,19 +34,24 @@ def main():
             continue
         if test_section(arb) != test_section(glsl):
             failures.append(f"{effect}: the [test] sections of the two files differ")
-        for kind in ("arb", "glsl"):
-            if f"(gallery/{effect}-{kind}.png)" not in page:
-                failures.append(f"{effect}: docs/gallery.md does not show {effect}-{kind}.png")
-    with tempfile.TemporaryDirectory() as tmp:
-        p = subprocess.run([arbiter, "run", "--png", tmp, corpus], capture_output=True,
-                           text=True, timeout=600)
-        if p.returncode != 0:
-            failures.append("the gallery does not pass:\n" + p.stdout)
-        for name in sorted(os.listdir(tmp)):
-            if not filecmp.cmp(os.path.join(tmp, name), os.path.join(root, "docs", "gallery", name),
-                               shallow=False):
-                failures.append(f"docs/gallery/{name} is not what arbiter draws now "
-                                f"(regenerate: arbiter run --png docs/gallery corpus/exec/gallery)")
+        for picture in (f"{effect}-arb", f"{effect}-glsl", f"glsl330/{effect}-arb"):
+            if f"(gallery/{picture}.png)" not in page:
+                failures.append(f"{effect}: docs/gallery.md does not show {picture}.png")
+    # (run options, folder under docs/gallery, the pictures kept)
+    for options, folder, suffix in (([], "", ".png"),
+                                    (["--translate=glsl330"], "glsl330", "-arb.png")):
+        with tempfile.TemporaryDirectory() as tmp:
+            p = subprocess.run([arbiter, "run", *options, "--png", tmp, corpus],
+                               capture_output=True, text=True, timeout=600)
+            if p.returncode != 0:
+                failures.append(f"the gallery does not pass {options}:\n" + p.stdout)
+            for name in sorted(n for n in os.listdir(tmp) if n.endswith(suffix)):
+                kept = os.path.join(root, "docs", "gallery", folder, name)
+                if not os.path.exists(kept) or not filecmp.cmp(os.path.join(tmp, name), kept,
+                                                               shallow=False):
+                    failures.append(f"docs/gallery/{os.path.join(folder, name)} is not what "
+                                    f"arbiter run {' '.join(options)} draws now "
+                                    f"(regenerate: docs/gallery.md)")
     for f in failures:
         print("FAILED", f)
     print(f"gallery_doc_test: {len(effects)} effects, {len(failures)} failure(s)")
