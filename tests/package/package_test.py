@@ -4,7 +4,8 @@ has a space), then the man page, the bash completion, examples/cmake-pipeline bu
 it with Ninja and with Make (one arbiter step per shader: a second build runs nothing, touching
 one shader re-runs its step alone, a rejected shader fails the build with its diagnostic and
 leaves no output), examples/api-check, a C++ program linked with the installed libraries, and
-examples/glstate-check, a host program linked with the header-only arbiter::glstate alone.
+examples/glstate-check, a host program linked with the header-only arbiter::glstate alone, and
+examples/port-to-core, an ARB program pair drawn through its glsl330 translation (Mesa's EGL).
 
 Usage: package_test.py BUILD_DIR SOURCE_DIR CMAKE CXX_COMPILER
 """
@@ -236,6 +237,19 @@ try:
     code, out = run([glstate_check, "state.matrix.modelview.row[0]"])
     check(code == 1 and "not a uniform" in out,
           f"glstate-check refuses a non-canonical spelling (exit {code})")
+
+    # --- examples/port-to-core: an ARB pair and its glsl330 translation, the same pixels ---
+    port_build = os.path.join(tmp, "port-to-core")
+    must([cmake, "-S", os.path.join(source_dir, "examples", "port-to-core"), "-B", port_build,
+          "-G", "Ninja", f"-DCMAKE_PREFIX_PATH={prefix}", f"-DCMAKE_CXX_COMPILER={cxx}"],
+         "configure examples/port-to-core")
+    must([cmake, "--build", port_build], "build examples/port-to-core against the installed package")
+    valid = os.path.join(source_dir, "corpus", "arb", "valid")
+    code, out = run([os.path.join(port_build, "port-to-core"),
+                     os.path.join(valid, "lit-blinn-phong.vp"),
+                     os.path.join(valid, "beyond-min-env-index-24.fp")])
+    check(code == 0 and "ok: the pictures match" in out,
+          f"port-to-core draws the same pixels through the translation (exit {code})")
     if failures:
         print(out)
 finally:
