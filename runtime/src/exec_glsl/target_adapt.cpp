@@ -67,7 +67,6 @@ std::string AsVec4(const Binding& b, const std::string& expr) {
 // Every varying of a run is therefore `flat` where the dialect has it (not ES 1.00).
 std::string VertexIn(const TargetDialect& d) { return d.legacy_io ? "attribute" : "in"; }
 std::string VertexOut(const TargetDialect& d) { return d.legacy_io ? "varying" : "flat out"; }
-std::string FragmentIn(const TargetDialect& d) { return d.legacy_io ? "varying" : "flat in"; }
 
 // The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`)
 // made flat, where the dialect has it.
@@ -132,12 +131,66 @@ std::string Attachment(const TargetDialect& d, size_t k) {
 
 // The header of a generated (or adapted) fragment shader: ES 1.00 needs EXT_draw_buffers
 // for more than one attachment.
+constexpr const char* kDrawBuffers = "#extension GL_EXT_draw_buffers : require\n";
 std::string FragmentHeader(const TargetDialect& d) {
   if (!d.legacy_io) return d.header;
   std::string header = d.header;
-  header.insert(header.find('\n') + 1, "#extension GL_EXT_draw_buffers : require\n");
+  header.insert(header.find('\n') + 1, kDrawBuffers);
   return header;
 }
+
+// A vec4 sent from the vertex to the fragment stage (the carrier varying `name`). ES 1.00 has
+// no flat varyings, and interpolating across a point sprite's quad turns an infinity into
+// NaN: there the value travels as its finite part and a class per component (0 finite,
+// 1 +inf, 2 -inf, 3 NaN; both constant over the quad, so interpolated exactly), and the
+// fragment shader rebuilds it from the uniform arbiter_special = (+inf, -inf, NaN, 0).
+constexpr const char* kEncode =
+    "float arbiter_class(float v) {\n"
+    "  return v != v ? 3.0 : (v > 3.4028235e38 ? 1.0 : (v < -3.4028235e38 ? 2.0 : 0.0));\n"
+    "}\n"
+    "vec4 arbiter_class(vec4 v) {\n"
+    "  return vec4(arbiter_class(v.x), arbiter_class(v.y), arbiter_class(v.z), "
+    "arbiter_class(v.w));\n"
+    "}\n"
+    "vec4 arbiter_finite(vec4 v, vec4 c) {\n"
+    "  return vec4(c.x == 0.0 ? v.x : 0.0, c.y == 0.0 ? v.y : 0.0, c.z == 0.0 ? v.z : 0.0,\n"
+    "              c.w == 0.0 ? v.w : 0.0);\n"
+    "}\n";
+constexpr const char* kDecode =
+    "float arbiter_decode(float v, float c) {\n"
+    "  return c == 0.0 ? v\n"
+    "                  : (c == 1.0 ? arbiter_special.x\n"
+    "                              : (c == 2.0 ? arbiter_special.y : arbiter_special.z));\n"
+    "}\n"
+    "vec4 arbiter_decode(vec4 v, vec4 c) {\n"
+    "  return vec4(arbiter_decode(v.x, c.x), arbiter_decode(v.y, c.y), arbiter_decode(v.z, c.z),\n"
+    "              arbiter_decode(v.w, c.w));\n"
+    "}\n";
+constexpr const char* kSpecialUniform = "uniform vec4 arbiter_special;\n";
+
+std::string SendDeclaration(const TargetDialect& d, const std::string& name) {
+  if (!d.legacy_io) return fmt::format("flat out vec4 {};\n", name);
+  return fmt::format("varying vec4 {0};\nvarying vec4 {0}_class;\n", name);
+}
+std::string ReceiveDeclaration(const TargetDialect& d, const std::string& name) {
+  if (!d.legacy_io) return fmt::format("flat in vec4 {};\n", name);
+  return fmt::format("varying vec4 {0};\nvarying vec4 {0}_class;\n", name);
+}
+// Statements of the vertex shader's main that send `value` (a vec4 expression).
+std::string Send(const TargetDialect& d, const std::string& name, const std::string& value) {
+  if (!d.legacy_io) return fmt::format("  {} = {};\n", name, value);
+  return fmt::format("  {0}_class = arbiter_class({1});\n  {0} = arbiter_finite({1}, {0}_class);\n",
+                     name, value);
+}
+// The fragment shader's vec4 expression of the value received.
+std::string Receive(const TargetDialect& d, const std::string& name) {
+  if (!d.legacy_io) return name;
+  return fmt::format("arbiter_decode({0}, {0}_class)", name);
+}
+// The functions Send and Receive need, before the generated main of each stage.
+std::string SendFunctions(const TargetDialect& d) { return d.legacy_io ? kEncode : ""; }
+std::string ReceiveFunctions(const TargetDialect& d) { return d.legacy_io ? kDecode : ""; }
+std::string ReceiveGlobals(const TargetDialect& d) { return d.legacy_io ? kSpecialUniform : ""; }
 
 std::string PixelDeclaration(const RunPlan& plan, const TargetDialect& d) {
   return plan.position_attrib >= 0 ? VertexIn(d) + " vec4 arbiter_pixel;\n"
@@ -168,20 +221,21 @@ bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, const TargetDi
       const Binding& b = plan.outputs[s].binding;
       std::string glsl;
       if (!ResultGlsl(t.bindings, b, arbvp::ProgramKind::Vertex, &glsl, error)) return false;
-      outs += fmt::format("{} vec4 arbiter_out{};\n", VertexOut(d), k);
-      ins += fmt::format("{} vec4 arbiter_out{};\n", FragmentIn(d), k);
-      copies += fmt::format("  arbiter_out{} = {};\n", k,
-                            AsVec4(b, RenameIdentifiers(glsl, kPositionRenames)));
-      reads += fmt::format("  {} = arbiter_out{};\n", Attachment(d, k), k);
+      const std::string carrier = fmt::format("arbiter_out{}", k);
+      outs += SendDeclaration(d, carrier);
+      ins += ReceiveDeclaration(d, carrier);
+      copies += Send(d, carrier, AsVec4(b, RenameIdentifiers(glsl, kPositionRenames)));
+      reads += fmt::format("  {} = {};\n", Attachment(d, k), Receive(d, carrier));
       pass.attachments.push_back(static_cast<int>(s));
     }
     if (!AdaptMain(base, kPositionRenames, kPositionGlobals + PixelDeclaration(plan, d) + outs,
                    &pass.vertex, error)) {
       return false;
     }
-    pass.vertex += fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}{}}}\n", kPositionInit,
-                               kPositionSet, copies);
-    pass.fragment = FragmentHeader(d) + ins + AttachmentDeclarations(d, pass.attachments.size()) +
+    pass.vertex += SendFunctions(d) + fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}{}}}\n",
+                                                  kPositionInit, kPositionSet, copies);
+    pass.fragment = FragmentHeader(d) + ReceiveGlobals(d) + ins +
+                    AttachmentDeclarations(d, pass.attachments.size()) + ReceiveFunctions(d) +
                     "\nvoid main() {\n" + reads + "}\n";
     passes->push_back(std::move(pass));
   }
@@ -228,11 +282,17 @@ bool PassThroughVertex(const CheckedTranslation& t, const TargetDialect& d, std:
     if (!declared.insert(name).second) continue;
     // A varying the map wraps in a constructor is a float (the fog coordinate).
     const bool scalar = m.glsl != name;
+    if (d.legacy_io) {
+      text += SendDeclaration(d, "arbiter_v_" + name);
+      copies += Send(d, "arbiter_v_" + name, attribute);
+      continue;
+    }
     text += fmt::format("{} {} {};\n", VertexOut(d), scalar ? "float" : "vec4", name);
     copies += fmt::format("  {} = {}{};\n", name, attribute, scalar ? ".x" : "");
   }
-  *out = text + "\nvoid main() {\n  gl_Position = arbiter_in_position;\n  gl_PointSize = 1.0;\n" +
-         copies + "}\n";
+  *out = text + SendFunctions(d) +
+         "\nvoid main() {\n  gl_Position = arbiter_in_position;\n  gl_PointSize = 1.0;\n" + copies +
+         "}\n";
   return true;
 }
 
@@ -241,28 +301,51 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
                   int max_attachments, std::vector<GlslPass>* passes, std::string* error) {
   std::string vertex;
   const std::set<std::string> varyings = FragmentVaryings(t);
+  // ES 1.00: each varying of the translation becomes a global of both stages, sent and
+  // received through a carrier (Send, Receive).
+  std::string sent_globals;
+  std::string sends;
+  std::string received_globals = ReceiveGlobals(d);
+  std::string receives;
+  std::string fragment = t.fragment;
+  std::string base = t.vertex;
+  for (const arbvp::RegisterMapping& m : FragmentInputs(t)) {
+    const std::string name = FirstName(m.glsl);
+    if (!d.legacy_io || received_globals.find(" " + name + ";") != std::string::npos) continue;
+    const bool scalar = m.glsl != name;
+    const std::string carrier = "arbiter_v_" + name;
+    for (const char* type : {"vec4", "float"}) {
+      fragment = DropLines(fragment, fmt::format("varying {} {};", type, name));
+      base = DropLines(base, fmt::format("varying {} {};", type, name));
+    }
+    const std::string declaration = fmt::format("{} {};\n", scalar ? "float" : "vec4", name);
+    received_globals += declaration + ReceiveDeclaration(d, carrier);
+    receives += fmt::format("  {} = {}{};\n", name, Receive(d, carrier), scalar ? ".x" : "");
+    sent_globals += declaration + SendDeclaration(d, carrier);
+    sends += Send(d, carrier, scalar ? fmt::format("vec4({}, 0.0, 0.0, 0.0)", name) : name);
+  }
   if (plan.mode == RunMode::Fragment) {
     if (!PassThroughVertex(t, d, &vertex, error)) return false;
   } else {
-    std::string base = t.vertex;
     for (const std::string& name : varyings) base = MakeFlat(base, d, "out", name);
-    if (!AdaptMain(base, kPositionRenames, kPositionGlobals + PixelDeclaration(plan, d), &vertex,
-                   error)) {
+    if (!AdaptMain(base, kPositionRenames,
+                   kPositionGlobals + PixelDeclaration(plan, d) + sent_globals, &vertex, error)) {
       return false;
     }
-    vertex +=
-        fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}}}\n", kPositionInit, kPositionSet);
+    vertex += SendFunctions(d) + fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}{}}}\n",
+                                             kPositionInit, kPositionSet, sends);
   }
   // Every fragment output the map names becomes a global.
-  std::string fragment = t.fragment;
   for (const std::string& name : varyings) fragment = MakeFlat(fragment, d, "in", name);
   Renames renames = {{"gl_FragColor", "arbiter_fragdata[0]"},
                      {"gl_FragData", "arbiter_fragdata"},
-                     {"gl_FragDepth", "arbiter_fragdepth"}};
-  std::string globals = "vec4 arbiter_fragdata[8];\nfloat arbiter_fragdepth;\n";
-  std::string init =
-      "  for (int i = 0; i < 8; ++i) arbiter_fragdata[i] = vec4(0.0);\n"
-      "  arbiter_fragdepth = 0.0;\n";
+                     {"gl_FragDepth", "arbiter_fragdepth"},
+                     // ES 1.00 with EXT_frag_depth (the binding map says gl_FragDepth).
+                     {"gl_FragDepthEXT", "arbiter_fragdepth"}};
+  std::string globals = received_globals + "vec4 arbiter_fragdata[8];\nfloat arbiter_fragdepth;\n";
+  std::string init = receives +
+                     "  for (int i = 0; i < 8; ++i) arbiter_fragdata[i] = vec4(0.0);\n"
+                     "  arbiter_fragdepth = 0.0;\n";
   for (const arbvp::RegisterMapping& m : t.bindings.outputs) {
     if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0) continue;
     const std::string name = FirstName(m.glsl);
@@ -274,7 +357,8 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
   }
   std::string adapted;
   if (!AdaptMain(fragment, renames, globals, &adapted, error)) return false;
-  if (d.legacy_io) adapted = FragmentHeader(d) + adapted.substr(adapted.find('\n') + 1);
+  // After #version: the translation's own #extension lines and precision block follow.
+  if (d.legacy_io) adapted.insert(adapted.find('\n') + 1, kDrawBuffers);
   const size_t per_pass = static_cast<size_t>(std::max(max_attachments - 1, 1));
   size_t next = 0;
   do {
@@ -293,6 +377,7 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
     copies += fmt::format("  {} = vec4(1.0);\n", Attachment(d, pass.attachments.size()));
     pass.attachments.push_back(kAliveFlag);
     pass.fragment = adapted + AttachmentDeclarations(d, pass.attachments.size()) +
+                    ReceiveFunctions(d) +
                     fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}}}\n", init, copies);
     passes->push_back(std::move(pass));
   } while (next < plan.outputs.size());

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <sstream>
 
 #include "arbiter/runtime/mesa.h"
@@ -266,8 +267,16 @@ class MesaTargetEngine final : public TargetEngine {
         ok = program != 0;
         if (!ok) break;
         gl_.UseProgram(program);
-        ok = exec::SetTargetUniforms(gl_, program, map, inputs, error) &&
-             Check("setting the uniforms", error);
+        ok = exec::SetTargetUniforms(gl_, program, map, inputs, error);
+        // ES 1.00's readback rebuilds non-finite values from this uniform (target_adapt.cpp).
+        const GLint special = gl_.GetUniformLocation(program, "arbiter_special");
+        if (special >= 0) {
+          const float special_values[4] = {std::numeric_limits<float>::infinity(),
+                                           -std::numeric_limits<float>::infinity(),
+                                           std::numeric_limits<float>::quiet_NaN(), 0.0f};
+          gl_.Uniform4fv(special, 1, special_values);
+        }
+        ok = ok && Check("setting the uniforms", error);
         if (ok) {
           framebuffer.Begin(static_cast<int>(pass.attachments.size()));
           ok = Draw(plan, map, inputs, program, width, height, error);
