@@ -252,6 +252,20 @@ def main():
         for options in ([], ["--translate"], ["--translate=glsl330"], ["--translate=es300"]):
             code, out, _ = run([*options, "state-uniforms.shader_test"], tmp)
             check(f"state uniforms {options}", code == 0 and "PASS" in out, out)
+        # A fragment program alone gets a vertex stage standing for GL's fixed-function one:
+        # the colour, and texture coordinate 1 by texture matrix 1 (scale 0.5): (0.4, 0.2) ->
+        # (0.2, 0.1); t.xy = (0.2, 0.3) + (0.2, 0.1).
+        with open(os.path.join(tmp, "fp-alone.shader_test"), "w") as f:
+            f.write("[require]\nGL_ARB_fragment_program\n\n[fragment program]\n!!ARBfp1.0\n"
+                    "TEMP t;\nMOV t, fragment.color;\nADD t.xy, t, fragment.texcoord[1];\n"
+                    "MOV result.color, t;\nEND\n\n[test]\northo 0 1 0 1\n"
+                    "matrix GL_TEXTURE1 0.5 0 0 0  0 0.5 0 0  0 0 1 0  0 0 0 1\n"
+                    "color 0.2 0.3 0.4 0.5\ntexcoord 1 (0.4, 0.2, 0, 1)\ndraw rect 0 0 1 1\n"
+                    "probe all rgba 0.4 0.4 0.4 0.5\n")
+        for options in ([], ["--translate=glsl330"], ["--translate=es300"],
+                        ["--translate=es100"]):
+            code, out, _ = run([*options, "fp-alone.shader_test"], tmp)
+            check(f"fragment program alone {options}", code == 0 and "PASS" in out, out)
         # A program the target cannot express is skipped with the refusal, not failed.
         tex1d = os.path.join(tmp, "tex1d.shader_test")
         with open(tex1d, "w") as f:

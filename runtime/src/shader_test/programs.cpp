@@ -193,6 +193,10 @@ bool Session::BuildGlsl(const std::string& translated_vertex,
     stages.push_back({GL_VERTEX_SHADER, "vertex", kPassthrough, test_.passthrough_line, false});
   } else if (test_.vertex_shaders.empty() && !translated_vertex.empty()) {
     stages.push_back({GL_VERTEX_SHADER, "vertex", translated_vertex, 0, true});
+  } else if (test_.vertex_shaders.empty() && StateUniforms() && !translated_fragment.empty()) {
+    // No fixed-function vertex stage writes the translation's named inputs.
+    stages.push_back(
+        {GL_VERTEX_SHADER, "vertex", StandInVertexShader(translated_fragment), 0, true});
   }
   for (const ShaderTestSource& f : test_.fragment_shaders) {
     stages.push_back({GL_FRAGMENT_SHADER, "fragment", f.text, f.line, false});

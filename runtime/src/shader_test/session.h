@@ -88,6 +88,7 @@ class Session {
   bool StateUniforms() const { return translated_ && bindings_.state_uniforms; }
   int AttributeLocation(const std::string& binding) const;  // -1: the program has none
   std::string StandInFragmentShader(const std::string& vertex) const;
+  std::string StandInVertexShader(const std::string& fragment);  // adds to bindings_
   void UploadStateUniforms();
   void TrackState(const std::string& command, const std::vector<std::string>& words);
   void AddGlslDiagnostics(const std::string& stage, const std::string& text, int line);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -85,6 +86,58 @@ std::string Session::StandInFragmentShader(const std::string& vertex) const {
   text +=
       fmt::format("void main() {{ {} = {}; }}\n", modern ? "arb_fragcolor" : "gl_FragColor", value);
   return text;
+}
+
+// A fragment program alone: GL's fixed-function vertex stage without lighting, texgen or
+// fog-coordinate arrays, for the inputs the fragment program reads: position by the MVP
+// matrix, the primary and secondary colours clamped, texture coordinate n by texture matrix
+// n, the fog coordinate as the eye-space distance |z| (GL_FRAGMENT_DEPTH). Its matrices and
+// inputs join the binding map, so that they are fed like the translation's own.
+std::string Session::StandInVertexShader(const std::string& fragment) {
+  const std::string version = fragment.substr(0, fragment.find('\n'));
+  const bool es = version.find(" es") != std::string::npos || version == "#version 100";
+  const bool modern = version != "#version 100";
+  std::string declarations;
+  std::string body;
+  auto input = [&](const std::string& name, int location, const std::string& binding) {
+    declarations += modern ? fmt::format("layout(location = {}) in vec4 {};\n", location, name)
+                           : fmt::format("attribute vec4 {};\n", name);
+    bindings_.attributes.push_back({name, location, binding});
+  };
+  auto matrix = [&](const std::string& name, const std::string& binding) {
+    declarations += fmt::format("uniform mat4 {};\n", name);
+    bindings_.state.push_back({name, "mat4", binding, -1, ""});
+  };
+  const char* out = modern ? "out" : "varying";
+  input("arb_ff_position", 0, "vertex.position");
+  matrix("arb_ff_mvp", "state.matrix.mvp");
+  body += "  gl_Position = arb_ff_mvp * arb_ff_position;\n";
+  for (const arbvp::RegisterMapping& m : bindings_.inputs) {
+    if (m.stage != arbvp::ProgramKind::Fragment) continue;
+    int unit = -1;
+    if (m.binding == "fragment.color.primary" || m.binding == "fragment.color.secondary") {
+      const bool primary = m.binding == "fragment.color.primary";
+      const std::string name = primary ? "arb_ff_color0" : "arb_ff_color1";
+      input(name, primary ? 3 : 4, primary ? "vertex.color.primary" : "vertex.color.secondary");
+      declarations += fmt::format("{} vec4 {};\n", out, m.glsl);
+      body += fmt::format("  {} = clamp({}, 0.0, 1.0);\n", m.glsl, name);
+    } else if (std::sscanf(m.binding.c_str(), "fragment.texcoord[%d]", &unit) == 1 && unit >= 0 &&
+               unit < 8) {
+      input(fmt::format("arb_ff_texcoord{}", unit), 8 + unit,
+            fmt::format("vertex.texcoord[{}]", unit));
+      matrix(fmt::format("arb_ff_texture{}", unit), fmt::format("state.matrix.texture[{}]", unit));
+      declarations += fmt::format("{} vec4 {};\n", out, m.glsl);
+      body += fmt::format("  {0} = arb_ff_texture{1} * arb_ff_texcoord{1};\n", m.glsl, unit);
+    } else if (m.binding == "fragment.fogcoord") {
+      matrix("arb_ff_modelview", "state.matrix.modelview[0]");
+      declarations += fmt::format("{} float arb_fogcoord;\n", out);
+      body += "  arb_fogcoord = abs((arb_ff_modelview * arb_ff_position).z);\n";
+    }
+  }
+  return fmt::format(
+      "{}\n// GL's fixed-function vertex stage for the inputs the fragment program reads.\n{}{}"
+      "void main() {{\n{}}}\n",
+      version, es ? "precision highp float;\n" : "", declarations, body);
 }
 
 void Session::UploadStateUniforms() {
