@@ -243,6 +243,8 @@ int RunVerify(const VerifyCommandOptions& options) {
   }
   std::string setup = fmt::format("seed {}, {} random vectors, {} via {}", options.seed,
                                   options.vectors, options.mesa.driver, options.mesa.backend);
+  // The target engines make EGL core and ES contexts whatever --backend says.
+  if (!verify.targets.empty()) setup += " (target engines via egl)";
   if (options.common.format == "json") {
     nlohmann::ordered_json j;
     j["seed"] = options.seed;

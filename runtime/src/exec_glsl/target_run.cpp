@@ -340,10 +340,12 @@ std::unique_ptr<TargetEngine> CreateTargetEngine(arbvp::EmitTarget target,
   GLint max_draw_buffers = 1;
   gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
   std::vector<const char*> needed;
-  if (target == arbvp::EmitTarget::Es300) needed = {"GL_EXT_color_buffer_float"};
-  if (target == arbvp::EmitTarget::Es100) {
-    needed = {"GL_EXT_color_buffer_float", "GL_EXT_draw_buffers"};
+  // RGBA32F attachments and linear filtering of RGBA32F textures are extensions in ES, and
+  // so are several attachments written from ES 1.00 shaders.
+  if (target == arbvp::EmitTarget::Es300 || target == arbvp::EmitTarget::Es100) {
+    needed = {"GL_EXT_color_buffer_float", "GL_OES_texture_float_linear"};
   }
+  if (target == arbvp::EmitTarget::Es100) needed.push_back("GL_EXT_draw_buffers");
   const std::string extensions = needed.empty() ? "" : GetString(gl, GL_EXTENSIONS);
   for (int i = 0; i < 16 && gl.GetError() != GL_NO_ERROR; ++i) {
   }
