@@ -107,13 +107,15 @@ class MesaTargetEngine final : public TargetEngine {
 
   bool Run(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
            const arbvp::ExecInputs& inputs, std::vector<arbvp::VectorResult>* results,
-           std::string* not_applicable, std::string* error) override {
+           std::string* not_applicable, std::string* error,
+           const compiler::SourceFile* vertex_source,
+           const compiler::SourceFile* fragment_source) override {
     results->clear();
     arbvp::EmitOptions options = emit;
     options.target = dialect_.target;
     options.state = arbvp::StateSource::Uniforms;
-    const CheckedTranslation translation =
-        EmitTranslation(programs.vertex, programs.fragment, options, nullptr, nullptr);
+    const CheckedTranslation translation = EmitTranslation(programs.vertex, programs.fragment,
+                                                           options, vertex_source, fragment_source);
     if (translation.refused) {
       *not_applicable = translation.error;
       return false;

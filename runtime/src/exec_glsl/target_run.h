@@ -11,6 +11,7 @@
 
 #include "arbiter/arbvp/emit.h"
 #include "arbiter/arbvp/exec.h"
+#include "arbiter/compiler/source.h"
 #include "arbiter/runtime/exec.h"
 
 namespace arbiter::runtime {
@@ -24,9 +25,12 @@ class TargetEngine {
   // source replaced) on every vector of `inputs`, results as ArbExecutor::RunTranslated gives
   // them. When the target refuses the programs, returns false with `error` empty and the
   // refusal (construct and target) in `not_applicable`; false with `error` otherwise.
+  // `sources` (optional) give the refusal its line and column.
   virtual bool Run(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
                    const arbvp::ExecInputs& inputs, std::vector<arbvp::VectorResult>* results,
-                   std::string* not_applicable, std::string* error) = 0;
+                   std::string* not_applicable, std::string* error,
+                   const compiler::SourceFile* vertex_source = nullptr,
+                   const compiler::SourceFile* fragment_source = nullptr) = 0;
 };
 
 // The engine of `target` (Glsl330, Es300 or Es100) on a new EGL context of `driver` (a

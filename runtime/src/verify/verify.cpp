@@ -142,7 +142,7 @@ Verdict VerifyOne(Engines* engines, const VerifySubject& subject, const VerifyOp
       bool ok = false;
       if (target != engines->targets.end()) {
         ok = target->second->Run(programs, options.emit, batch.inputs, &results, &not_applicable,
-                                 &error);
+                                 &error, subject.vertex_source, subject.fragment_source);
       } else if (engine == kEngineMesaArb) {
         ok = executor->Run(programs, batch.inputs, &results, &error);
       } else {
