@@ -26,7 +26,8 @@ nlohmann::ordered_json Registers(const std::vector<RegisterMapping>& registers) 
 std::string BindingMapToJson(const BindingMap& map) {
   nlohmann::ordered_json j;
   // The keys of the other targets only where they differ from GLSL 1.10's built-in state, so
-  // that the GLSL 1.10 maps stay as they were (docs/binding-map.md).
+  // that the GLSL 1.10 maps stay as they were (docs/json-output.md, docs/guide/translate.md "State
+  // as uniforms").
   if (map.target != "glsl110" || map.state_uniforms) {
     j["target"] = map.target;
     j["state_source"] = map.state_uniforms ? "uniforms" : "builtins";
