@@ -20,6 +20,11 @@ class GlContext {
   virtual GetProcFn get_proc() const = 0;
 };
 
+// Makes `context` current and loads its entry points into `gl`; on failure (with `error`:
+// "cannot make the NAME context current", or the missing entry point) nothing is current.
+[[nodiscard]] bool MakeCurrentAndLoad(GlContext* context, const std::string& name, ExecGl* gl,
+                                      std::string* error);
+
 // Sets Mesa's environment (GALLIUM_DRIVER = `driver`, which the caller has validated; no
 // shader cache) before any context exists.
 void SetMesaEnvironment(const std::string& driver);

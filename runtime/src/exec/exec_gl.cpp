@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "exec/context.h"
+
 namespace arbiter::runtime::exec {
 
 bool LoadExecGl(const GetProcFn& get_proc, ExecGl* gl, std::string* error) {
@@ -16,6 +18,17 @@ bool LoadExecGl(const GetProcFn& get_proc, ExecGl* gl, std::string* error) {
   ARBITER_EXEC_GL_FUNCTIONS(ARBITER_EXEC_GL_LOAD)
 #undef ARBITER_EXEC_GL_LOAD
   return true;
+}
+
+bool MakeCurrentAndLoad(GlContext* context, const std::string& name, ExecGl* gl,
+                        std::string* error) {
+  if (!context->MakeCurrent()) {
+    *error = fmt::format("cannot make the {} context current", name);
+    return false;
+  }
+  if (LoadExecGl(context->get_proc(), gl, error)) return true;
+  context->Release();
+  return false;
 }
 
 std::string GlErrorName(GLenum error) {

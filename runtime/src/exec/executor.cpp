@@ -268,14 +268,10 @@ std::unique_ptr<ArbExecutor> CreateArbExecutor(const ExecOptions& options, std::
   std::unique_ptr<exec::GlContext> context = options.backend == Backend::Egl
                                                  ? exec::CreateEglContext(error)
                                                  : exec::CreateOsMesaContext(error);
-  if (context == nullptr) return nullptr;
-  if (!context->MakeCurrent()) {
-    *error = fmt::format("cannot make the {} context current", BackendName(options.backend));
-    return nullptr;
-  }
   ExecGl gl;
-  if (!exec::LoadExecGl(context->get_proc(), &gl, error)) {
-    context->Release();
+  if (context == nullptr ||
+      !exec::MakeCurrentAndLoad(context.get(), std::string(BackendName(options.backend)), &gl,
+                                error)) {
     return nullptr;
   }
   const std::string renderer = GetString(gl, GL_RENDERER);

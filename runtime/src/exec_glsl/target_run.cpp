@@ -327,14 +327,8 @@ std::unique_ptr<TargetEngine> CreateTargetEngine(arbvp::EmitTarget target,
   }
   exec::SetMesaEnvironment(driver);
   std::unique_ptr<exec::GlContext> context = exec::CreateEglApiContext(api, error);
-  if (context == nullptr) return nullptr;
-  if (!context->MakeCurrent()) {
-    *error = "cannot make the EGL context current";
-    return nullptr;
-  }
   ExecGl gl;
-  if (!exec::LoadExecGl(context->get_proc(), &gl, error)) {
-    context->Release();
+  if (context == nullptr || !exec::MakeCurrentAndLoad(context.get(), "EGL", &gl, error)) {
     return nullptr;
   }
   const std::string renderer = GetString(gl, GL_RENDERER);
