@@ -471,6 +471,12 @@ class Run {
     return r;
   }
 
+  // "result.texcoord": the spelling of a relatively addressed array, without its index.
+  std::string ArrayName(const Variable& var) const {
+    const std::string name = BindingName(var.bindings.at(0), program_.kind);
+    return name.substr(0, name.find('['));
+  }
+
   // The element of result.texcoord[A0.x + n] (NV_vertex_program3) a write goes to. Outside
   // the array the spec leaves the write's effects undefined ("may overwrite other programs
   // results"): the write is dropped and its reason recorded on the results.
@@ -489,12 +495,11 @@ class Run {
       return true;
     }
     // An undefined or unstable address, or one outside the array: every result may change.
-    const int why =
-        addr.why != kDefined
-            ? addr.why
-            : reasons_->Add(fmt::format(
-                  "a write to {}[{}] outside the array, or at an unstable address{}",
-                  BindingName(var.bindings[0], program_.kind).substr(0, 15), index, where));
+    const int why = addr.why != kDefined
+                        ? addr.why
+                        : reasons_->Add(fmt::format(
+                              "a write to {}[{}] outside the array, or at an unstable address{}",
+                              ArrayName(var), index, where));
     for (auto& [key, out] : outputs_) {
       for (Val& c : out.value) c.why = c.why == kDefined ? why : c.why;
     }
