@@ -1238,12 +1238,18 @@ class Parser {
                                 vp() ? "fragment" : "vertex"));
       }
     }
-    std::vector<std::string_view> groups;
-    for (const glstate::StateGroupInfo& group : glstate::kStateGroups) {
-      if (glstate::GroupInStage(group, vp())) groups.push_back(group.word);
-    }
+    // The group words of each program kind, built once: every state binding looks them up.
+    static const std::array<std::vector<std::string_view>, 2> kGroups = [] {
+      std::array<std::vector<std::string_view>, 2> words;
+      for (const glstate::StateGroupInfo& group : glstate::kStateGroups) {
+        for (int vertex = 0; vertex < 2; ++vertex) {
+          if (glstate::GroupInStage(group, vertex == 1)) words[vertex].push_back(group.word);
+        }
+      }
+      return words;
+    }();
     Token word;
-    if (!ExpectWordSlow(groups, "state binding", &word)) return false;
+    if (!ExpectWordSlow(kGroups[vp() ? 1 : 0], "state binding", &word)) return false;
     const glstate::StateGroupInfo& group = *glstate::FindStateGroup(Text(word));
     Binding b;
     b.kind = BindingKind::State;
