@@ -14,6 +14,7 @@
 #include "arbiter/runtime/mesa.h"
 #include "arbiter/runtime/worker.h"
 #include "cli.h"
+#include "exec_glsl.h"
 #include "load_arb.h"
 #include "options.h"
 
@@ -22,9 +23,11 @@ namespace {
 
 struct ExecCommandOptions {
   CommonOptions common;  // --format --color --error-limit --stage, the files
-  std::string engine = "ref";
+  std::string engine;    // "" when not given: ref for ARB programs, mesa for GLSL shaders
   MesaOptions mesa;
   std::vector<std::string> set;
+  std::vector<std::string> uniforms;  // GLSL only
+  bool pair = false;
   std::vector<std::string> state;
   std::vector<std::string> textures;
   std::string vectors;
@@ -183,7 +186,20 @@ void PrintJson(const std::vector<EngineRun>& runs, const std::vector<arbvp::Diff
   fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
-int RunExec(const ExecCommandOptions& options) {
+int RunExec(const ExecCommandOptions& given) {
+  if (ExecFilesAreGlsl(given.common)) {
+    ExecGlslOptions glsl{&given.common, given.engine,   &given.mesa,   given.set, given.uniforms,
+                         given.state,   given.textures, given.vectors, given.pair};
+    return RunExecGlsl(glsl);
+  }
+  if (!given.uniforms.empty()) {
+    fmt::print(stderr,
+               "arbiter: error: --uniform sets GLSL uniforms; an ARB program's parameters are "
+               "--set program.local[N]=.. and program.env[N]=..\n");
+    return static_cast<int>(Exit::Usage);
+  }
+  ExecCommandOptions options = given;
+  if (options.engine.empty()) options.engine = "ref";
   runtime::Backend backend = runtime::Backend::OSMesa;
   if (!runtime::ParseBackend(options.mesa.backend, &backend) ||
       !runtime::IsSupportedMesaDriver(options.mesa.driver)) {
@@ -288,20 +304,27 @@ std::function<int()> AddExecCommand(CLI::App* app) {
   auto options = std::make_shared<ExecCommandOptions>();
   CLI::App* exec = app->add_subcommand(
       "exec",
-      "run ARB programs on the reference interpreter or Mesa and print every output register");
+      "run ARB programs on the reference interpreter or Mesa, or GLSL shaders on Mesa, and print "
+      "every output");
   exec->footer(
-      "A vertex program and a fragment program given together run as a pair. With --engine all, "
+      "A vertex program and a fragment program (or a vertex and a fragment shader) given together "
+      "run as a pair. With --engine all, "
       "the exit code is 1 when the engines differ on a component the specs define. Inputs: "
       "docs/exec.md.");
   CommonOptions& common = options->common;
-  exec->add_option("files", common.files, "one program, or a vertex and a fragment program")
+  exec->add_option("files", common.files,
+                   "one program or shader, or a vertex and a fragment program or shader")
       ->required();
   exec->add_option("--engine", options->engine,
-                   "ref (the reference interpreter), mesa, or all (both, differences marked)")
+                   "ref (the reference interpreter, the default for ARB programs), mesa (the only "
+                   "engine for GLSL shaders), or all (both, differences marked)")
       ->check(CLI::IsMember({"ref", "mesa", "all"}));
-  AddRepeatedOption(exec, "--set", &options->set, "NAME=V1,..",
-                    "an input for every vector, one per --set (vertex.attrib[1]=1,2,3,4, "
-                    "fragment.texcoord[0]=.5,.5, program.local[0]=..., vertex.program.env[2]=...)");
+  AddRepeatedOption(
+      exec, "--set", &options->set, "NAME=V1,..",
+      "an input for every vector, one per --set (vertex.attrib[1]=1,2,3,4, "
+      "fragment.texcoord[0]=.5,.5, program.local[0]=..., vertex.program.env[2]=...; GLSL: "
+      "gl_Vertex=1,2,3,1, gl_MultiTexCoord0=.., a user attribute tangent=.., and for "
+      "a fragment shader alone gl_Color=.., gl_TexCoord[0]=.., a varying)");
   AddRepeatedOption(exec, "--state", &options->state, "NAME=V1,..",
                     "GL state, one per --state (state.light[0].diffuse=1,0,0,1, "
                     "state.matrix.modelview=<16 numbers, row-major>, state.fog.density=2, ...)");
@@ -309,12 +332,19 @@ std::function<int()> AddExecCommand(CLI::App* app) {
                     "one per --texture: UNIT=TARGET:PATTERN[:WxH[xD]][:nearest|linear]"
                     "[:repeat|clamp|mirror], e.g. 0=2D:checker:4x4:linear (patterns: checker, "
                     "gradient, depth-gradient, depth-gradient-compare)");
+  AddRepeatedOption(exec, "--uniform", &options->uniforms, "NAME=V1,..",
+                    "GLSL: a user uniform, one per --uniform (lightDir=0,0,1, w[2]=.5, "
+                    "light.pos=1,2,3, m=<N*N numbers, column by column>, tex=1 for a sampler's "
+                    "texture unit)");
+  exec->add_flag("--pair", options->pair,
+                 "GLSL: run the vertex and the fragment shader as one program (implied by two "
+                 "files)");
   exec->add_option("--vectors", options->vectors,
                    "a JSON file of inputs: {\"set\": {...}, \"textures\": {...}, \"vectors\": "
                    "[{...}, ...]} (docs/exec.md)");
   AddFormatOption(exec, &common.format, {"text", "json"});
   AddColorOption(exec, &common.color);
-  AddStageOption(exec, &common.stage, /*glsl=*/false);
+  AddStageOption(exec, &common.stage, /*glsl=*/true);
   AddErrorLimitOption(exec, &common.error_limit);
   AddMesaOptions(exec, &options->mesa, "of the Mesa worker");
   return [options] { return RunExec(*options); };

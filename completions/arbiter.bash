@@ -70,9 +70,9 @@ _arbiter() {
       esac
       files="$arb" ;;
     exec)
-      options="-h --help --engine --backend --driver --set --state --texture --vectors --format
-               --color --stage --error-limit --timeout --memory-limit"
-      files="$arb" ;;
+      options="-h --help --engine --backend --driver --set --state --texture --uniform --pair
+               --vectors --format --color --stage --error-limit --timeout --memory-limit"
+      files="$arb|$glsl" stages="arbvp arbfp vert frag" ;;
     verify)
       options="-h --help --engines --vectors --seed --pair --max-reports --backend --driver
                --format --color --stage -j --jobs --timeout --memory-limit"
@@ -106,7 +106,7 @@ _arbiter() {
       [[ "$command" == exec ]] && _arbiter_files json
       return 0 ;;
     --error-limit | -j | --jobs | --seed | --max-reports | --timeout | --memory-limit | --set | \
-      --state | --texture)
+      --state | --texture | --uniform)
       return 0 ;;
   esac
 

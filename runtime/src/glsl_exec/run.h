@@ -1,0 +1,109 @@
+// The GLSL exec's GL side: the entry points it needs beyond the ARB executor's, building
+// programs, setting uniforms, and the vertex (transform feedback) and fragment runs.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "arbiter/runtime/glsl_exec.h"
+#include "exec/exec_gl.h"
+
+namespace arbiter::runtime::glsl_exec {
+
+// X(type, member, "glName"): the entry points the ARB executor's table (exec_gl.h) lacks.
+#define ARBITER_GLSL_EXEC_GL_FUNCTIONS(X)                                                         \
+  X(PFNGLGETACTIVEUNIFORMPROC, GetActiveUniform, "glGetActiveUniform")                            \
+  X(PFNGLTRANSFORMFEEDBACKVARYINGSPROC, TransformFeedbackVaryings, "glTransformFeedbackVaryings") \
+  X(PFNGLGETTRANSFORMFEEDBACKVARYINGPROC, GetTransformFeedbackVarying,                            \
+    "glGetTransformFeedbackVarying")                                                              \
+  X(PFNGLBEGINTRANSFORMFEEDBACKPROC, BeginTransformFeedback, "glBeginTransformFeedback")          \
+  X(PFNGLENDTRANSFORMFEEDBACKPROC, EndTransformFeedback, "glEndTransformFeedback")                \
+  X(PFNGLBINDBUFFERBASEPROC, BindBufferBase, "glBindBufferBase")                                  \
+  X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData, "glGetBufferSubData")                            \
+  X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv, "glVertexAttrib4fv")                               \
+  X(decltype(&glStencilFunc), StencilFunc, "glStencilFunc")                                       \
+  X(decltype(&glStencilOp), StencilOp, "glStencilOp")                                             \
+  X(decltype(&glDepthMask), DepthMask, "glDepthMask")                                             \
+  X(decltype(&glClearStencil), ClearStencil, "glClearStencil")                                    \
+  X(decltype(&glScissor), Scissor, "glScissor")
+
+struct Gl : exec::ExecGl {
+#define ARBITER_GLSL_EXEC_GL_MEMBER(type, member, name) type member = nullptr;
+  ARBITER_GLSL_EXEC_GL_FUNCTIONS(ARBITER_GLSL_EXEC_GL_MEMBER)
+#undef ARBITER_GLSL_EXEC_GL_MEMBER
+};
+
+// Loads the extra entry points; false (with `error`) when one is missing.
+[[nodiscard]] bool LoadExtraGl(const exec::GetProcFn& get_proc, Gl* gl, std::string* error);
+
+// Vertex shader objects and fragment shader objects linked into one program, with the
+// attributes of `attributes` bound to locations 1, 2, .. (in order, a matN taking N) and the
+// transform feedback varyings `capture` (interleaved). 0 (with `error`) when Mesa rejects it.
+struct ProgramSpec {
+  std::vector<std::string> vertex;    // shader objects' texts
+  std::vector<std::string> fragment;  // idem
+  std::vector<GlslInputSlot> attributes;
+  std::vector<std::string> capture;
+};
+GLuint BuildProgram(const Gl& gl, const ProgramSpec& spec, std::string* error);
+
+// The user uniforms (not gl_*) the program keeps active.
+struct ActiveUniform {
+  std::string name;  // as GL names it: "w[0]" for an array
+  GLenum type = 0;
+  GLint size = 1;  // array elements
+};
+std::vector<ActiveUniform> ActiveUniforms(const Gl& gl, GLuint program);
+
+// Sets the --uniform values that the current `program` keeps; `used` gets the names of the
+// active uniforms set. A wrong number of values or a fractional integer is a usage error
+// (set in `usage`, false).
+[[nodiscard]] bool SetUniforms(const Gl& gl, GLuint program, const GlslExecInputs& inputs,
+                               std::set<std::string>* used, std::set<size_t>* applied,
+                               std::string* usage);
+
+// The attribute slot's location in a program built from `attributes` (BuildProgram's order).
+int AttributeLocation(const std::vector<GlslInputSlot>& attributes, const std::string& name);
+
+// Sends the attributes of vector `v` (built-ins through their fixed-function calls, user
+// attributes at their locations) and emits the vertex with gl_Vertex.
+void EmitVertex(const Gl& gl, const std::vector<GlslInputSlot>& attributes,
+                const std::map<std::string, std::vector<float>>& v);
+
+// An output the vertex shader writes, as transform feedback names it.
+struct VertexOutput {
+  std::string name;  // "gl_TexCoord[1]", "v[2]", "m"
+  std::string type;  // "vec4", "mat3"
+  int components = 4;
+};
+std::vector<VertexOutput> VertexOutputs(const glsl::Reflection& vertex);
+
+// Sets a uniform of GLSL type `type` (a float type, an int, bool or sampler) at `location`
+// to `count` elements of `values`.
+void UploadUniform(const Gl& gl, GLint location, std::string_view type, GLsizei count,
+                   const std::vector<float>& values);
+
+// The runs. Each needs the context current with the GL state and textures set; results get
+// their outputs appended (vertex outputs first). False with `error` on a GL failure, with
+// `usage` on a bad --uniform.
+struct RunContext {
+  const Gl& gl;
+  const GlslShaders& shaders;
+  const GlslExecInputs& inputs;
+  std::set<std::string>* used_uniforms;  // active uniforms given a value
+  std::set<size_t>* applied;             // --uniform assignments that landed
+  std::vector<ActiveUniform>* active;    // every active user uniform seen
+  std::string* usage;
+};
+[[nodiscard]] bool RunVertex(const RunContext& run, std::vector<GlslVectorResult>* results,
+                             std::string* error);
+[[nodiscard]] bool RunFragment(const RunContext& run, std::vector<GlslVectorResult>* results,
+                               std::string* error);
+
+// Links a program, sets the user uniforms on it (current afterwards) and records its active
+// uniforms; 0 with `error` (Mesa) or `usage` set.
+GLuint PrepareProgram(const RunContext& run, const ProgramSpec& spec, std::string* error);
+
+}  // namespace arbiter::runtime::glsl_exec
