@@ -15,30 +15,31 @@
 namespace arbiter::targets {
 namespace {
 
-// The version and profile each dialect is, and whether it is parsed with Vulkan semantics.
+// The version and profile each dialect is, and whether it is parsed with Vulkan semantics;
+// in GlslDialect's order.
 struct DialectInfo {
+  GlslDialect dialect;
+  std::string_view name;  // arbiter translate's --target spelling
   int version;
   EProfile profile;
   bool vulkan;
   const char* directive;  // the #version line it takes, for the message when it differs
 };
 
-DialectInfo Info(GlslDialect dialect) {
-  switch (dialect) {
-    case GlslDialect::Glsl110:
-      return {110, ENoProfile, false, "#version 110"};
-    case GlslDialect::Glsl120:
-      return {120, ENoProfile, false, "#version 120"};
-    case GlslDialect::Glsl330Core:
-      return {330, ECoreProfile, false, "#version 330 core"};
-    case GlslDialect::Es100:
-      return {100, EEsProfile, false, "#version 100"};
-    case GlslDialect::Es300:
-      return {300, EEsProfile, false, "#version 300 es"};
-    case GlslDialect::Vulkan450:
-      return {450, ECoreProfile, true, "#version 450"};
+constexpr DialectInfo kDialects[] = {
+    {GlslDialect::Glsl110, "glsl110", 110, ENoProfile, false, "#version 110"},
+    {GlslDialect::Glsl120, "glsl120", 120, ENoProfile, false, "#version 120"},
+    {GlslDialect::Glsl330Core, "glsl330", 330, ECoreProfile, false, "#version 330 core"},
+    {GlslDialect::Es100, "es100", 100, EEsProfile, false, "#version 100"},
+    {GlslDialect::Es300, "es300", 300, EEsProfile, false, "#version 300 es"},
+    {GlslDialect::Vulkan450, "vk450", 450, ECoreProfile, true, "#version 450"},
+};
+
+const DialectInfo& Info(GlslDialect dialect) {
+  for (const DialectInfo& d : kDialects) {
+    if (d.dialect == dialect) return d;
   }
-  return {110, ENoProfile, false, "#version 110"};
+  return kDialects[0];
 }
 
 EShLanguage Language(Stage stage) {
@@ -128,6 +129,13 @@ Parsed ParseGlsl(std::string_view glsl, Stage stage, GlslDialect dialect,
 }
 
 }  // namespace
+
+std::optional<GlslDialect> GlslDialectNamed(std::string_view name) {
+  for (const DialectInfo& d : kDialects) {
+    if (d.name == name) return d.dialect;
+  }
+  return std::nullopt;
+}
 
 bool ValidateGlsl(std::string_view glsl, Stage stage, GlslDialect dialect,
                   std::vector<Message>* messages) {

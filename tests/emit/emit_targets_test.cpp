@@ -20,14 +20,9 @@ namespace fs = std::filesystem;
 constexpr EmitTarget kTargets[] = {EmitTarget::Glsl120, EmitTarget::Glsl330, EmitTarget::Es100,
                                    EmitTarget::Es300, EmitTarget::Vk450};
 
-// The two enumerations list the dialects in one order.
+// The validator's dialect of a GLSL target, by its --target spelling.
 targets::GlslDialect Dialect(EmitTarget t) {
-  static_assert(
-      static_cast<int>(targets::GlslDialect::Glsl330Core) ==
-          static_cast<int>(EmitTarget::Glsl330) &&
-      static_cast<int>(targets::GlslDialect::Es300) == static_cast<int>(EmitTarget::Es300) &&
-      static_cast<int>(targets::GlslDialect::Vulkan450) == static_cast<int>(EmitTarget::Vk450));
-  return static_cast<targets::GlslDialect>(t);
+  return targets::GlslDialectNamed(EmitTargetName(t)).value_or(targets::GlslDialect::Glsl110);
 }
 
 targets::Stage StageOf(ProgramKind kind) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -70,6 +71,10 @@ inline constexpr uint32_t kHlslPushConstantRegister = 13;
 // buffer slots). Descriptor sets are ignored.
 bool SpirvToMsl(std::span<const uint32_t> spirv, std::string* msl, std::vector<Message>* messages);
 inline constexpr uint32_t kMslPushConstantBuffer = 30;
+
+// The dialect of arbiter translate's --target spelling ("glsl330", "es300", "vk450", ...);
+// none for the targets that are not GLSL ("spirv", "hlsl", "msl") or unknown names.
+std::optional<GlslDialect> GlslDialectNamed(std::string_view name);
 
 // glslang accepts `glsl` as a shader of `stage` in `dialect` (compiled and linked alone).
 bool ValidateGlsl(std::string_view glsl, Stage stage, GlslDialect dialect,
