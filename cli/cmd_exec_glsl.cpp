@@ -209,7 +209,13 @@ void PrintJson(const Loaded& loaded, const runtime::GlslRunResult* result,
   if (result != nullptr) engines["mesa"] = runtime::GlslResultsToJson(result->vectors);
   j["results"] = engines;
   j["notes"] = result != nullptr ? result->notes : std::vector<std::string>{};
-  j["diagnostics"] = DiagnosticsJson(loaded.reports);
+  std::vector<compiler::FileReport> with_diagnostics;  // as the ARB exec: files that have any
+  for (const compiler::FileReport& report : loaded.reports) {
+    if (!report.diagnostics.empty() || report.dropped_errors > 0) {
+      with_diagnostics.push_back(report);
+    }
+  }
+  j["diagnostics"] = DiagnosticsJson(with_diagnostics);
   j["warnings"] = warnings;
   fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }

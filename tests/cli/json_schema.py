@@ -336,6 +336,16 @@ def main():
                    cwd=exec_dir)
         check_json("exec", ["exec", "--format", "json", "--engine", "all", "pair.vp",
                             "inputs/pair.fp"], cwd=exec_dir)
+        # exec of GLSL shaders: a vertex shader, a fragment shader with a discard, a pair, a
+        # rejected shader.
+        glsl_dir = os.path.join(ROOT, "tests/golden/exec-glsl")
+        check_json("exec", ["exec", "--format", "json", "--uniform", "weights=1,2,3",
+                            "inputs/lit.vert"], cwd=glsl_dir)
+        check_json("exec", ["exec", "--format", "json", "--vectors", "inputs/mrt.json",
+                            "inputs/mrt.frag"], cwd=glsl_dir)
+        check_json("exec", ["exec", "--format", "json", "inputs/pair.vert", "inputs/pair.frag"],
+                   cwd=glsl_dir)
+        check_json("exec", ["exec", "--format", "json", "inputs/rejected.vert"], cwd=glsl_dir)
 
         # verify: agreement, a disagreement (an injected translator bug), undefined results,
         # a pair.
