@@ -121,6 +121,78 @@ TEST(EmitTargetsTest, GoldenTranslations) {
   }
 }
 
+// What a dialect's gl_FragCoord lacks is emulated exactly (state_uniforms.cpp, FragPosition):
+// y counted from the other edge is "framebuffer.height" minus y, integer pixel centres are
+// half a pixel lower; where gl_FragCoord matches there is no uniform.
+TEST(EmitTargetsTest, FragmentPositionConventions) {
+  auto translate = [](EmitTarget target, const std::string& text) {
+    Checked c = CheckText("t.fp", text);
+    EXPECT_TRUE(c.program) << c.errors;
+    Translation t = EmitGlsl(*c.program, For(target), c.source.get());
+    EXPECT_EQ(TargetErrors(target, ProgramKind::Fragment, t.glsl), "") << t.glsl;
+    return t;
+  };
+  auto has_height = [](const Translation& t) {
+    for (const StateUniform& u : t.bindings.state) {
+      if (u.name == "arb_framebuffer_height") return u.binding == "framebuffer.height";
+    }
+    return false;
+  };
+  const std::string plain = "!!ARBfp1.0\nMOV result.color, fragment.position;\nEND\n";
+  const std::string upper =
+      "!!ARBfp1.0\nOPTION ARB_fragment_coord_origin_upper_left;\n"
+      "MOV result.color, fragment.position;\nEND\n";
+  const std::string both =
+      "!!ARBfp1.0\nOPTION ARB_fragment_coord_origin_upper_left;\n"
+      "OPTION ARB_fragment_coord_pixel_center_integer;\n"
+      "MOV result.color, fragment.position;\nEND\n";
+  // Vulkan counts y from the top: ARB's lower-left y is flipped, the upper-left one is not.
+  Translation t = translate(EmitTarget::Vk450, plain);
+  EXPECT_NE(t.glsl.find("(arb_framebuffer_height.x - gl_FragCoord.y)"), std::string::npos);
+  EXPECT_TRUE(has_height(t));
+  t = translate(EmitTarget::Vk450, upper);
+  EXPECT_EQ(t.glsl.find("arb_framebuffer_height"), std::string::npos);
+  EXPECT_NE(t.glsl.find("arb_fragcolor0 = gl_FragCoord;"), std::string::npos) << t.glsl;
+  // ES counts y from the bottom: the option's upper-left y is flipped.
+  t = translate(EmitTarget::Es300, plain);
+  EXPECT_EQ(t.glsl.find("arb_framebuffer_height"), std::string::npos);
+  t = translate(EmitTarget::Es100, both);
+  EXPECT_NE(t.glsl.find("vec4((gl_FragCoord.x - 0.5), ((arb_framebuffer_height.x - "
+                        "gl_FragCoord.y) - 0.5), gl_FragCoord.zw)"),
+            std::string::npos)
+      << t.glsl;
+  EXPECT_TRUE(has_height(t));
+  // GLSL 3.30 has the layout qualifiers.
+  t = translate(EmitTarget::Glsl330, both);
+  EXPECT_NE(t.glsl.find("layout(origin_upper_left, pixel_center_integer) in vec4 gl_FragCoord;"),
+            std::string::npos);
+  EXPECT_FALSE(has_height(t));
+}
+
+// A shadow lookup of the GLSL 1.30 dialects expands its float by the texture's
+// GL_DEPTH_TEXTURE_MODE, a uniform spelled "texture[n].depthmode" (glstate::DepthModeSelector).
+TEST(EmitTargetsTest, ShadowLookupReadsDepthMode) {
+  Checked c = CheckText("t.fp",
+                        "!!ARBfp1.0\nOPTION ARB_fragment_program_shadow;\n"
+                        "TEX result.color, fragment.texcoord[0], texture[2], SHADOW2D;\nEND\n");
+  ASSERT_TRUE(c.program) << c.errors;
+  for (EmitTarget target : {EmitTarget::Glsl330, EmitTarget::Es300, EmitTarget::Vk450}) {
+    SCOPED_TRACE(std::string(EmitTargetName(target)));
+    Translation t = EmitGlsl(*c.program, For(target), c.source.get());
+    EXPECT_EQ(TargetErrors(target, ProgramKind::Fragment, t.glsl), "");
+    EXPECT_NE(t.glsl.find("arb_shadow(texture(arb_texture2, arb_texcoord0.xyz), "
+                          "arb_texture2_depthmode)"),
+              std::string::npos)
+        << t.glsl;
+    bool bound = false;
+    for (const StateUniform& u : t.bindings.state) {
+      bound = bound || (u.name == "arb_texture2_depthmode" && u.type == "vec4" &&
+                        u.binding == "texture[2].depthmode");
+    }
+    EXPECT_TRUE(bound);
+  }
+}
+
 // GLSL 1.10 with --state uniforms: the same uniforms, GLSL 1.10 keywords.
 TEST(EmitTargetsTest, Glsl110WithStateUniforms) {
   Checked c = Load("corpus/arb/valid/directional-light-two-sided.vp");
@@ -216,11 +288,20 @@ TEST(EmitTargetsTest, Refusals) {
   EXPECT_EQ(RefusalOf(EmitTarget::Vk450, rect),
             "2:53: TEX of a RECT texture: GLSL 4.50 (Vulkan) has no RECT samplers");
   EXPECT_EQ(RefusalOf(EmitTarget::Glsl330, rect), "");
+  // fragment.position and ARB_fragment_coord_conventions are emulated with state as uniforms
+  // (FragPosition); GLSL 1.20 with built-in state has no layout qualifiers and no uniform.
   const std::string position = "!!ARBfp1.0\nMOV result.color, fragment.position;\nEND\n";
-  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, position),
-            "2:19: fragment.position: GLSL 4.50 (Vulkan) has its window origin at the upper left "
-            "(ARB counts y from the lower left)");
+  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, position), "");
   EXPECT_EQ(RefusalOf(EmitTarget::Es300, position), "");
+  const std::string upper =
+      "!!ARBfp1.0\nOPTION ARB_fragment_coord_origin_upper_left;\n"
+      "MOV result.color, fragment.position;\nEND\n";
+  for (EmitTarget t : {EmitTarget::Es100, EmitTarget::Es300, EmitTarget::Vk450}) {
+    EXPECT_EQ(RefusalOf(t, upper), "") << EmitTargetName(t);
+  }
+  EXPECT_EQ(RefusalOf(EmitTarget::Glsl120, upper),
+            "2:8: OPTION ARB_fragment_coord_origin_upper_left: GLSL 1.20 has no gl_FragCoord "
+            "layout qualifiers");
   const std::string color1 =
       "!!ARBfp1.0\nOPTION ARB_draw_buffers;\nMOV result.color[1], fragment.color;\nEND\n";
   EXPECT_EQ(RefusalOf(EmitTarget::Es100, color1),

@@ -7,8 +7,6 @@
 namespace arbiter::arbvp::emit {
 namespace {
 
-// GLSL 1.10 guarantees gl_MaxClipPlanes >= 6 only; planes past that become uniforms.
-constexpr int kGlslClipPlanes = 6;
 // gl_MultiTexCoord0..7 are the only texture-coordinate attributes GLSL 1.10 names.
 constexpr int kGlslMultiTexCoords = 8;
 

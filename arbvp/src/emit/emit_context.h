@@ -120,6 +120,9 @@ struct Context {
 
 // NV implementation limits the translation enforces as the reference interpreter does:
 // the minimums of NV_vertex_program2_option and NV_fragment_program2 (tables X.10, X.11).
+// GLSL 1.10 guarantees gl_MaxClipPlanes >= 6 only: planes past that become uniforms, and the
+// clip distances of OPTION ARB_position_invariant cover six.
+inline constexpr int kGlslClipPlanes = 6;
 inline constexpr int kMaxExecInstructions = 65536;  // MAX_PROGRAM_EXEC_INSTRUCTIONS_NV
 inline constexpr int kMaxCallDepth = 4;             // MAX_PROGRAM_CALL_DEPTH_NV
 inline constexpr int kMaxLoopDepth = 4;             // MAX_PROGRAM_LOOP_DEPTH_NV

@@ -163,7 +163,8 @@ std::string EmitShader(Context& ctx) {
   if (ctx.needs_texture_lod && ctx.target.fragment_lod == "ext") {
     out += "#extension GL_ARB_shader_texture_lod : require\n";
   }
-  const std::string frag_coord = FragCoordLayout(p);
+  // Where the dialect has no layout qualifiers, FragPosition emulates them.
+  const std::string frag_coord = ctx.target.coord_conventions ? FragCoordLayout(p) : "";
   if (!frag_coord.empty()) out += "#extension GL_ARB_fragment_coord_conventions : require\n";
   out += fmt::format("// ARB {} program translated to {} by arbiter{}.\n",
                      ctx.IsVertex() ? "vertex" : "fragment", ctx.target.title,

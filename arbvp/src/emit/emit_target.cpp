@@ -17,33 +17,8 @@ namespace emit {
 namespace {
 
 constexpr DialectRow kTargetRows[] = {
-#define ARBVP_EMIT_TARGET(name, spelling, version, title, es, uniforms, attribute, vertex_out,    \
-                          fragment_in, modern, outputs, locations, block, tex1d, rect, tex3d,     \
-                          shadow, shadow1d, fragment_lod, draw_buffers, loops, coord_conventions, \
-                          frag_position)                                                          \
-  {EmitTarget::name,                                                                              \
-   spelling,                                                                                      \
-   version,                                                                                       \
-   title,                                                                                         \
-   es,                                                                                            \
-   uniforms,                                                                                      \
-   attribute,                                                                                     \
-   vertex_out,                                                                                    \
-   fragment_in,                                                                                   \
-   modern,                                                                                        \
-   outputs,                                                                                       \
-   locations,                                                                                     \
-   block,                                                                                         \
-   tex1d,                                                                                         \
-   rect,                                                                                          \
-   tex3d,                                                                                         \
-   shadow,                                                                                        \
-   shadow1d,                                                                                      \
-   fragment_lod,                                                                                  \
-   draw_buffers,                                                                                  \
-   loops,                                                                                         \
-   coord_conventions,                                                                             \
-   frag_position},
+// DialectRow lists the columns in the table's order.
+#define ARBVP_EMIT_TARGET(name, ...) {EmitTarget::name, __VA_ARGS__},
 #include "arbiter/arbvp/emit_targets.def"
 #undef ARBVP_EMIT_TARGET
 };
@@ -99,8 +74,10 @@ std::string ReplaceIdentifiers(const std::string& text, F replace) {
 }
 
 // The GLSL 1.30 lookups: texture2D(...) -> texture(...); a shadow lookup returns a float
-// there and a vec4 (r, r, r, 1) in GLSL 1.10 (DEPTH_TEXTURE_MODE LUMINANCE, GL's default,
-// which the reference interpreter assumes): shadow2D(...) -> arb_shadow(texture(...)).
+// there and a vec4 in GLSL 1.10, expanded by the texture's GL_DEPTH_TEXTURE_MODE, which these
+// targets read from a uniform (glstate::DepthModeSelector; the reference interpreter assumes
+// LUMINANCE, GL's default): shadow2D(arb_textureN, ...) ->
+// arb_shadow(texture(arb_textureN, ...), arb_textureN_depthmode).
 std::string ModernLookups(const std::string& text, bool* used_shadow) {
   return ReplaceIdentifiers(
       text, [&](const std::string& word, const std::string& all, size_t* at) -> std::string {
@@ -118,7 +95,8 @@ std::string ModernLookups(const std::string& text, bool* used_shadow) {
         std::string args = ModernLookups(all.substr(*at, end + 1 - *at), used_shadow);
         *at = end + 1;
         *used_shadow = true;
-        return "arb_shadow(" + modern + args + ")";
+        const std::string sampler = args.substr(1, args.find_first_of(", )") - 1);
+        return "arb_shadow(" + modern + args + ", " + sampler + "_depthmode)";
       });
 }
 
@@ -166,9 +144,14 @@ std::string FinishForTarget(const Context& ctx, std::string text) {
     if (shadow) {
       const size_t main = text.find("\nvoid main() {\n");
       text.insert(main + 1,
-                  "// A shadow lookup as GLSL 1.10's: (r, r, r, 1), DEPTH_TEXTURE_MODE LUMINANCE.\n"
-                  "vec4 arb_shadow(float r) {\n"
-                  "  return vec4(r, r, r, 1.0);\n"
+                  "// A shadow lookup as GLSL 1.10's: r expanded by GL_DEPTH_TEXTURE_MODE, each\n"
+                  "// component 0, r or 1 as the mode's selector reads 0, 1 or 2.\n"
+                  "float arb_depth_mode(float r, float m) {\n"
+                  "  return m == 1.0 ? r : (m == 2.0 ? 1.0 : 0.0);\n"
+                  "}\n"
+                  "vec4 arb_shadow(float r, vec4 mode) {\n"
+                  "  return vec4(arb_depth_mode(r, mode.x), arb_depth_mode(r, mode.y),\n"
+                  "              arb_depth_mode(r, mode.z), arb_depth_mode(r, mode.w));\n"
                   "}\n\n");
     }
   }
@@ -249,10 +232,6 @@ bool UsesStateUniforms(const EmitOptions& options) {
 
 namespace {
 
-bool IsFragPosition(const Binding& b) {
-  return b.kind == BindingKind::FragmentAttrib && b.fragment_attrib == FragmentAttrib::Position;
-}
-
 bool IsExtraColor(const Binding& b) {
   return b.kind == BindingKind::Result && b.result == ResultReg::FragColor && b.index > 0;
 }
@@ -284,8 +263,10 @@ Untranslatable FindUntranslatable(const Program& program, const EmitOptions& opt
                         op, row.title),
             base.range};
   }
+  // With state as uniforms the conventions are emulated (state_uniforms.cpp, FragPosition).
+  const bool uniforms = UsesStateUniforms(options);
   for (const Option& o : program.options) {
-    if (!row.coord_conventions &&
+    if (!row.coord_conventions && !uniforms &&
         (o.id == OptionId::OriginUpperLeft || o.id == OptionId::PixelCenterInteger)) {
       return {Refusal(row, fmt::format("OPTION {}", GetOptionInfo(o.id).spelling),
                       "no gl_FragCoord layout qualifiers"),
@@ -341,16 +322,6 @@ Untranslatable FindUntranslatable(const Program& program, const EmitOptions& opt
     }
     if (!row.draw_buffers && AnyBinding(program, inst.dst.var, IsExtraColor)) {
       return {Refusal(row, "result.color[n] with n > 0", "one colour output"), inst.dst.range};
-    }
-    if (!row.frag_position) {
-      for (int i = 0; i < inst.src_count; ++i) {
-        const SrcOperand& s = inst.src[static_cast<size_t>(i)];
-        if (AnyBinding(program, s.var, IsFragPosition)) {
-          return {Refusal(row, "fragment.position",
-                          "its window origin at the upper left (ARB counts y from the lower left)"),
-                  s.range};
-        }
-      }
     }
   }
   return {};

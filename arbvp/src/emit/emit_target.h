@@ -34,6 +34,7 @@ struct DialectRow {
   bool loops;
   bool coord_conventions;
   bool frag_position;
+  bool clip_distances;
 };
 
 const DialectRow& GetDialectRow(EmitTarget target);

@@ -96,6 +96,34 @@ Expr VertexInput(Context& ctx, const Binding& b) {
   return {"vec4(0.0)", 4, true};
 }
 
+// fragment.position where the dialect's gl_FragCoord differs from it (emit_targets.def,
+// frag_position and coord_conventions): y counted from the other edge is the framebuffer's
+// height minus y, and integer pixel centres are half a pixel lower. Both are exact (the
+// coordinates are halves of integers). False where gl_FragCoord (with its layout) is it.
+bool FragPosition(Context& ctx, Expr* out) {
+  const DialectRow& row = ctx.target;
+  const bool upper = ctx.program.HasOption(OptionId::OriginUpperLeft);
+  const bool integer = ctx.program.HasOption(OptionId::PixelCenterInteger);
+  if (row.coord_conventions && row.frag_position) return false;
+  const bool flip =
+      upper == row.frag_position;  // the origin the program wants is not the dialect's
+  if (!flip && !integer) return false;
+  std::string x = "gl_FragCoord.x";
+  std::string y = "gl_FragCoord.y";
+  if (flip) {
+    const std::string name = StateUniformName("framebuffer.height");
+    ctx.state[name] = StateUniform{name, "vec4", "framebuffer.height"};
+    y = fmt::format("({}.x - gl_FragCoord.y)", name);
+  }
+  if (integer) {
+    x = fmt::format("({} - 0.5)", x);
+    y = fmt::format("({} - 0.5)", y);
+  }
+  *out = Expr{fmt::format("vec4({}, {}, gl_FragCoord.zw)", x, y), 4, true};
+  out->parts = {x, y, "gl_FragCoord.z", "gl_FragCoord.w"};
+  return true;
+}
+
 bool FragmentInput(Context& ctx, const Binding& b, Expr* out) {
   switch (b.fragment_attrib) {
     case FragmentAttrib::Color:
@@ -111,6 +139,7 @@ bool FragmentInput(Context& ctx, const Binding& b, Expr* out) {
       *out = Varying(ctx, "arb_fogcoord", "float");
       return true;
     case FragmentAttrib::Position:
+      return FragPosition(ctx, out);
     case FragmentAttrib::Facing:
       return false;
   }
@@ -180,7 +209,23 @@ std::string InvariantPosition(Context& ctx) {
   row.state = StateItem::MatrixRow;
   row.matrix = MatrixName::Mvp;
   (void)ReadBinding(ctx, row);
-  return fmt::format("gl_Position = arb_matrix_mvp0 * {};  // OPTION ARB_position_invariant\n", p);
+  std::string out =
+      fmt::format("gl_Position = arb_matrix_mvp0 * {};  // OPTION ARB_position_invariant\n", p);
+  if (!ctx.target.clip_distances) return out;
+  // User clip planes clip as without a program (ARB_vertex_program 2.11): by the eye-space
+  // position; GL_CLIP_PLANEn enables distance n. GLSL 1.10 guarantees six planes.
+  row.matrix = MatrixName::Modelview;
+  (void)ReadBinding(ctx, row);
+  out += fmt::format("vec4 arb_eye_position = arb_matrix_modelview0 * {};\n", p);
+  for (int n = 0; n < kGlslClipPlanes; ++n) {
+    Binding plane;
+    plane.kind = BindingKind::State;
+    plane.state = StateItem::ClipPlane;
+    plane.index = n;
+    out += fmt::format("gl_ClipDistance[{}] = dot({}, arb_eye_position);\n", n,
+                       ReadStateUniform(ctx, plane).text);
+  }
+  return out;
 }
 
 int VaryingLocation(std::string_view name) {
@@ -241,7 +286,14 @@ std::string UniformsDeclarations(Context& ctx) {
     out +=
         fmt::format("{}{} {} {};\n", layout, vertex ? row.vertex_out : row.fragment_in, type, name);
   }
-  // Uniforms.
+  // Uniforms. A shadow lookup of these targets reads its texture's GL_DEPTH_TEXTURE_MODE
+  // (emit_target.cpp, arb_shadow).
+  for (const auto& [unit, target] : ctx.samplers) {
+    if (!TexTargetIsShadow(target) || !row.modern) continue;
+    const std::string spelling = fmt::format("texture[{}].depthmode", unit);
+    const std::string name = StateUniformName(spelling);
+    ctx.state[name] = StateUniform{name, "vec4", spelling};
+  }
   struct Member {
     std::string declaration;
     std::string name;

@@ -178,7 +178,10 @@ bool SetGlslUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& 
 }
 
 bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& map,
-                       const arbvp::ExecInputs& inputs, std::string* error) {
+                       const arbvp::ExecInputs& inputs, int framebuffer_height,
+                       std::string* error) {
+  glstate::GlState state = inputs.state;
+  state.framebuffer_height = static_cast<float>(framebuffer_height);
   for (const arbvp::ParameterArray& p : map.parameters) {
     const GLint location = gl.GetUniformLocation(program, p.name.c_str());
     if (location < 0) continue;  // optimised away
@@ -188,7 +191,7 @@ bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap
     for (int i = 0; i < p.size; ++i) {
       const std::string spelling = fmt::format("program.{}[{}]", p.local ? "local" : "env", i);
       glstate::UniformData value;
-      if (!glstate::UniformValue(inputs.state, params, spelling, &value)) {
+      if (!glstate::UniformValue(state, params, spelling, &value)) {
         *error = fmt::format("glstate::UniformValue cannot evaluate '{}' ({})", spelling, p.name);
         return false;
       }
@@ -201,7 +204,7 @@ bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap
     const GLint location = gl.GetUniformLocation(program, u.name.c_str());
     if (location < 0) continue;
     glstate::UniformData value;
-    if (!glstate::UniformValue(inputs.state, inputs.vertex_params, u.binding, &value)) {
+    if (!glstate::UniformValue(state, inputs.vertex_params, u.binding, &value)) {
       glstate::StateRef beyond;
       if (!glstate::ParseStateSpelling(u.binding, &beyond)) {
         *error = fmt::format("glstate::UniformValue cannot evaluate '{}' ({})", u.binding, u.name);

@@ -29,8 +29,10 @@ GLuint LinkGlslPass(const ExecGl& gl, const GlslPass& pass, const arbvp::Binding
 
 // The target engines' SetGlslUniforms: every value from its ARB spelling in `map` through
 // the host library (glstate::UniformValue), program.env/local arrays element by element, so
-// that verification tests the library a port uses.
+// that verification tests the library a port uses. `framebuffer_height` is the drawable's
+// (glstate's framebuffer_height, for the translations that flip gl_FragCoord.y).
 [[nodiscard]] bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap& map,
-                                     const arbvp::ExecInputs& inputs, std::string* error);
+                                     const arbvp::ExecInputs& inputs, int framebuffer_height,
+                                     std::string* error);
 
 }  // namespace arbiter::runtime::exec

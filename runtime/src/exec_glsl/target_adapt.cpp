@@ -98,7 +98,12 @@ std::vector<arbvp::RegisterMapping> FragmentInputs(const CheckedTranslation& t) 
   std::vector<arbvp::RegisterMapping> inputs;
   bool fog = false;
   for (const arbvp::RegisterMapping& m : t.bindings.inputs) {
-    if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0) continue;
+    // fragment.position reads gl_FragCoord, flipped or shifted where the dialect differs
+    // (an expression of it), never a varying.
+    if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0 ||
+        m.binding == "fragment.position") {
+      continue;
+    }
     inputs.push_back(m);
     fog = fog || m.binding == "fragment.fogcoord";
   }

@@ -269,7 +269,7 @@ class MesaTargetEngine final : public TargetEngine {
         ok = program != 0;
         if (!ok) break;
         gl_.UseProgram(program);
-        ok = exec::SetTargetUniforms(gl_, program, map, inputs, error);
+        ok = exec::SetTargetUniforms(gl_, program, map, inputs, height, error);
         // ES 1.00's readback rebuilds non-finite values from this uniform (target_adapt.cpp).
         const GLint special = gl_.GetUniformLocation(program, "arbiter_special");
         if (special >= 0) {

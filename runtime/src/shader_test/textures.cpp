@@ -151,6 +151,8 @@ void Session::Texture(const std::vector<std::string>& a) {
 
   GLuint id = 0;
   gl_.ActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+  // A new texture has GL's initial GL_DEPTH_TEXTURE_MODE (--translate's state).
+  state_.depth_texture_mode[static_cast<size_t>(unit)] = glstate::kDepthModeLuminance;
   gl_.GenTextures(1, &id);
   textures_.push_back(id);
   gl_.BindTexture(target, id);
@@ -243,7 +245,16 @@ void Session::TexParameter(const std::vector<std::string>& a) {
     std::string name = "GL_" + a[2];
     std::transform(name.begin(), name.end(), name.begin(),
                    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    gl_.TexParameteri(target, parameter, static_cast<GLint>(Enum(name)));
+    const GLenum value = Enum(name);
+    gl_.TexParameteri(target, parameter, static_cast<GLint>(value));
+    if (parameter == GL_DEPTH_TEXTURE_MODE) {  // for --translate's state as uniforms
+      GLint active = GL_TEXTURE0;
+      gl_.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
+      const int unit = active - GL_TEXTURE0;
+      if (unit >= 0 && unit < glstate::kMaxTextureImageUnits) {
+        state_.depth_texture_mode[static_cast<size_t>(unit)] = value;
+      }
+    }
   }
 }
 

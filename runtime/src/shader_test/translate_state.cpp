@@ -159,6 +159,7 @@ void Session::UploadStateUniforms() {
     }
     gl_.Uniform4fv(location, p.size, values.data());
   }
+  state_.framebuffer_height = static_cast<float>(window_.height);  // the test's window
   for (const arbvp::StateUniform& s : bindings_.state) {
     const GLint location = gl_.GetUniformLocation(program_, s.name.c_str());
     if (location < 0) continue;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <map>
 
@@ -23,6 +24,13 @@ inline constexpr int kMaxTextureCoords = 8;
 inline constexpr int kMaxLights = 8;
 inline constexpr int kMaxClipPlanes = 6;
 inline constexpr int kMaxProgramMatrices = 8;  // state.matrix.program[n]
+// Texture image units of fragment programs' texture[n]: Mesa's MAX_TEXTURE_IMAGE_UNITS.
+inline constexpr int kMaxTextureImageUnits = 16;
+// GL_DEPTH_TEXTURE_MODE's values (ARB_depth_texture; GL_RED is GL 3.0's).
+inline constexpr uint32_t kDepthModeLuminance = 0x1909;  // GL_LUMINANCE, the initial value
+inline constexpr uint32_t kDepthModeIntensity = 0x8049;  // GL_INTENSITY
+inline constexpr uint32_t kDepthModeAlpha = 0x1906;      // GL_ALPHA
+inline constexpr uint32_t kDepthModeRed = 0x1903;        // GL_RED
 // env and local indices accepted by the model: Mesa's MAX_PROGRAM_ENV_PARAMETERS (the specs'
 // minimum is 96 for vertex programs, 24 for fragment programs).
 inline constexpr int kMaxProgramParams = 256;
@@ -81,6 +89,19 @@ struct GlState {
   std::array<Vec4, kMaxTextureCoords> texenv_color{};  // (0,0,0,0) initially
   float depth_near = 0.0f;
   float depth_far = 1.0f;
+  // The height in pixels of the framebuffer drawn to. Not GL state an ARB program reads:
+  // translations whose gl_FragCoord counts y from the other edge than fragment.position
+  // (Vulkan; ES under OPTION ARB_fragment_coord_origin_upper_left) read it as
+  // "framebuffer.height" (uniforms.h).
+  float framebuffer_height = 0.0f;
+  // GL_DEPTH_TEXTURE_MODE of the texture bound to each image unit: how a shadow lookup
+  // (ARB_fragment_program_shadow) expands its result. Not an ARB state binding; translations
+  // with state as uniforms read it as "texture[n].depthmode" (uniforms.h).
+  std::array<uint32_t, kMaxTextureImageUnits> depth_texture_mode = [] {
+    std::array<uint32_t, kMaxTextureImageUnits> modes{};
+    modes.fill(kDepthModeLuminance);
+    return modes;
+  }();
 
   // Sets the identity matrices and light 0's white diffuse and specular colours.
   GlState() {

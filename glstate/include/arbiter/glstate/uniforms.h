@@ -73,11 +73,30 @@ inline UniformData VectorUniform(const Vec4& v) {
 
 }  // namespace detail
 
+// How a shadow lookup's result r expands under GL_DEPTH_TEXTURE_MODE `mode`, per component:
+// 0 reads 0, 1 reads r, 2 reads 1. LUMINANCE (r, r, r, 1), INTENSITY (r, r, r, r), ALPHA
+// (0, 0, 0, r), RED (r, 0, 0, 1); an unknown mode reads as LUMINANCE, GL's initial value.
+inline Vec4 DepthModeSelector(uint32_t mode) {
+  switch (mode) {
+    case kDepthModeIntensity:
+      return {1, 1, 1, 1};
+    case kDepthModeAlpha:
+      return {0, 0, 0, 1};
+    case kDepthModeRed:
+      return {1, 0, 0, 2};
+    default:
+      return {1, 1, 1, 2};
+  }
+}
+
 // The value of the uniform whose binding is spelled `spelling`:
 //   a state binding ("state.fog.params", "state.matrix.mvp.row[0]"): StateValue, a Vector;
 //   a whole matrix ("state.matrix.modelview[0].inverse"): StateMatrix, a Matrix;
 //   "program.env[n]" / "program.local[n]": that entry of `params`, the parameters of the
-//   program the uniform belongs to (env of its target, local of the program), a Vector.
+//   program the uniform belongs to (env of its target, local of the program), a Vector;
+//   two spellings that are not ARB bindings, for what the translations emulate:
+//   "texture[n].depthmode", DepthModeSelector of unit n's GL_DEPTH_TEXTURE_MODE (shadow
+//   lookups), and "framebuffer.height", (height, 0, 0, 0) (fragment.position), Vectors.
 // False, leaving `out` alone, when the spelling is not canonical (spelling.h) or names an
 // index past the model's arrays (gl_state.h: lights, clip planes, texture units, texture and
 // program matrices, kMaxProgramParams parameters).
@@ -96,6 +115,16 @@ inline UniformData VectorUniform(const Vec4& v) {
     ref.index = matrix.index;
     if (!detail::InModel(ref)) return false;
     *out = detail::MatrixUniform(StateMatrix(state, matrix.matrix, matrix.index, matrix.modifier));
+    return true;
+  }
+  if (spelling == "framebuffer.height") {
+    *out = detail::VectorUniform({state.framebuffer_height, 0.0f, 0.0f, 0.0f});
+    return true;
+  }
+  StateRef unit;
+  if (detail::MatchSpelling({"texture[{i}].depthmode"}, spelling, &unit)) {
+    if (unit.index < 0 || unit.index >= kMaxTextureImageUnits) return false;
+    *out = detail::VectorUniform(DepthModeSelector(state.depth_texture_mode[unit.index]));
     return true;
   }
   for (const bool local : {false, true}) {
