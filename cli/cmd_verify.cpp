@@ -208,7 +208,7 @@ int RunVerify(const VerifyCommandOptions& options) {
     fmt::print(stderr,
                "arbiter: error: --engines: ref (the specification, every engine's reference) "
                "and at least one of mesa-arb, mesa-glsl, mesa-glsl330, mesa-es300, "
-               "mesa-es100\n");
+               "mesa-es100, vulkan-spirv\n");
     return static_cast<int>(Exit::Usage);
   }
   arbvp::Mutation mutation = arbvp::Mutation::None;
@@ -243,8 +243,11 @@ int RunVerify(const VerifyCommandOptions& options) {
   }
   std::string setup = fmt::format("seed {}, {} random vectors, {} via {}", options.seed,
                                   options.vectors, options.mesa.driver, options.mesa.backend);
-  // The target engines make EGL core and ES contexts whatever --backend says.
-  if (!verify.targets.empty()) setup += " (target engines via egl)";
+  // The target engines make EGL core and ES contexts whatever --backend says; vulkan-spirv
+  // runs on lavapipe whatever --driver says.
+  const bool vulkan = has(runtime::kEngineVulkanSpirv);
+  if (verify.targets.size() > (vulkan ? 1u : 0u)) setup += " (target engines via egl)";
+  if (vulkan) setup += " (vulkan-spirv on lavapipe)";
   if (options.common.format == "json") {
     nlohmann::ordered_json j;
     j["seed"] = options.seed;
@@ -285,7 +288,8 @@ std::function<int()> AddVerifyCommand(CLI::App* app) {
   cmd->add_option("--engines", options->engines,
                   "ref and the Mesa engines to compare with it: mesa-arb (the program), "
                   "mesa-glsl (its translation), mesa-glsl330, mesa-es300, mesa-es100 (the "
-                  "target translations on EGL core and ES contexts)")
+                  "target translations on EGL core and ES contexts), vulkan-spirv (the vk450 "
+                  "translation as SPIR-V on lavapipe)")
       ->delimiter(',')
       ->check(CLI::IsMember(AllEngines()));
   cmd->add_option("--vectors", options->vectors, "random input vectors besides the edge vectors")

@@ -1,7 +1,8 @@
 // Target readback adaptation: see target_adapt.h. Like glsl_adapt.cpp, the translation is
 // edited at the level of identifiers and whole lines only. What is relied on: `void main()`,
 // the names the binding map gives each result and input, the declaration of a fragment
-// output as `out vec4 NAME;` on its own line, and the comment that marks the epilogue's
+// output as `out vec4 NAME;` on its own line (after `layout(location = N) ` in Vulkan, where
+// each varying is declared the same way), and the comment that marks the epilogue's
 // vertex-colour clamp (dropped for a vertex program alone, whose results the other engines
 // report unclamped).
 #include "exec_glsl/target_adapt.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <set>
 
 namespace arbiter::runtime::exec {
@@ -67,9 +69,20 @@ std::string AsVec4(const Binding& b, const std::string& expr) {
 // Every varying of a run is therefore `flat` where the dialect has it (not ES 1.00).
 std::string VertexIn(const TargetDialect& d) { return d.legacy_io ? "attribute" : "in"; }
 std::string VertexOut(const TargetDialect& d) { return d.legacy_io ? "varying" : "flat out"; }
+// The layout qualifier of a stage input or output at `location`, where the dialect needs one.
+std::string Location(const TargetDialect& d, int location) {
+  return d.locations ? fmt::format("layout(location = {}) ", location) : "";
+}
 
-// The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`)
-// made flat, where the dialect has it.
+// The length of the `layout(...) ` that opens `line`, if any.
+size_t LayoutPrefix(const std::string& line) {
+  if (line.rfind("layout(", 0) != 0) return 0;
+  const size_t close = line.find(") ");
+  return close == std::string::npos ? 0 : close + 2;
+}
+
+// The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`, after
+// a layout qualifier in Vulkan) made flat, where the dialect has it.
 std::string MakeFlat(const std::string& text, const TargetDialect& d, const char* keyword,
                      const std::string& name) {
   if (d.legacy_io) return text;
@@ -78,14 +91,54 @@ std::string MakeFlat(const std::string& text, const TargetDialect& d, const char
   while (begin < text.size()) {
     size_t end = text.find('\n', begin);
     end = end == std::string::npos ? text.size() : end + 1;
-    const std::string line = text.substr(begin, end - begin);
+    std::string line = text.substr(begin, end - begin);
+    const size_t layout = LayoutPrefix(line);
     for (const char* type : {" vec4 ", " float "}) {
-      if (line.rfind(keyword + std::string(type) + name + ";", 0) == 0) {
-        out += "flat ";
+      const std::string declaration = keyword + std::string(type) + name + ";";
+      if (line.compare(layout, declaration.size(), declaration) == 0) {
+        line.insert(layout, "flat ");
         break;
       }
     }
     out += line;
+    begin = end;
+  }
+  return out;
+}
+
+// The location the translation declares for its stage input `name` (`layout(location = N)
+// in vec4 NAME;`), or -1.
+int DeclaredLocation(const std::string& text, const std::string& name) {
+  size_t begin = 0;
+  while (begin < text.size()) {
+    size_t end = text.find('\n', begin);
+    end = end == std::string::npos ? text.size() : end + 1;
+    const std::string line = text.substr(begin, end - begin);
+    const size_t layout = LayoutPrefix(line);
+    for (const char* type : {"in vec4 ", "in float "}) {
+      const std::string declaration = type + name + ";";
+      if (layout != 0 && line.compare(layout, declaration.size(), declaration) == 0 &&
+          line.rfind("layout(location = ", 0) == 0) {
+        return std::atoi(line.c_str() + 18);
+      }
+    }
+    begin = end;
+  }
+  return -1;
+}
+
+// Vulkan, a vertex shader alone: the translation's outputs (`layout(location = N) out vec4
+// NAME;`) become globals, leaving the locations to the readback carriers.
+std::string DemoteOutputs(const std::string& text, const TargetDialect& d) {
+  if (!d.locations) return text;
+  std::string out;
+  size_t begin = 0;
+  while (begin < text.size()) {
+    size_t end = text.find('\n', begin);
+    end = end == std::string::npos ? text.size() : end + 1;
+    const std::string line = text.substr(begin, end - begin);
+    const size_t layout = LayoutPrefix(line);
+    out += layout != 0 && line.compare(layout, 4, "out ") == 0 ? line.substr(layout + 4) : line;
     begin = end;
   }
   return out;
@@ -173,12 +226,12 @@ constexpr const char* kDecode =
     "}\n";
 constexpr const char* kSpecialUniform = "uniform vec4 arbiter_special;\n";
 
-std::string SendDeclaration(const TargetDialect& d, const std::string& name) {
-  if (!d.legacy_io) return fmt::format("flat out vec4 {};\n", name);
+std::string SendDeclaration(const TargetDialect& d, const std::string& name, int location) {
+  if (!d.legacy_io) return fmt::format("{}flat out vec4 {};\n", Location(d, location), name);
   return fmt::format("varying vec4 {0};\nvarying vec4 {0}_class;\n", name);
 }
-std::string ReceiveDeclaration(const TargetDialect& d, const std::string& name) {
-  if (!d.legacy_io) return fmt::format("flat in vec4 {};\n", name);
+std::string ReceiveDeclaration(const TargetDialect& d, const std::string& name, int location) {
+  if (!d.legacy_io) return fmt::format("{}flat in vec4 {};\n", Location(d, location), name);
   return fmt::format("varying vec4 {0};\nvarying vec4 {0}_class;\n", name);
 }
 // Statements of the vertex shader's main that send `value` (a vec4 expression).
@@ -198,13 +251,24 @@ std::string ReceiveFunctions(const TargetDialect& d) { return d.legacy_io ? kDec
 std::string ReceiveGlobals(const TargetDialect& d) { return d.legacy_io ? kSpecialUniform : ""; }
 
 std::string PixelDeclaration(const RunPlan& plan, const TargetDialect& d) {
-  return plan.position_attrib >= 0 ? VertexIn(d) + " vec4 arbiter_pixel;\n"
-                                   : "uniform vec4 arbiter_pixel;\n";
+  return plan.position_attrib >= 0
+             ? Location(d, plan.position_attrib) + VertexIn(d) + " vec4 arbiter_pixel;\n"
+             : "uniform vec4 arbiter_pixel;\n";
 }
 
 const Renames kPositionRenames = {{"gl_Position", "arbiter_position"},
                                   {"gl_PointSize", "arbiter_pointsize"}};
 constexpr const char* kPositionGlobals = "vec4 arbiter_position;\nfloat arbiter_pointsize;\n";
+// Vulkan clips a point by every gl_ClipDistance the vertex shader writes (GL only by the
+// enabled ones, none here): the translation's clip distances become a global array.
+Renames PositionRenames(const TargetDialect& d) {
+  Renames renames = kPositionRenames;
+  if (d.locations) renames["gl_ClipDistance"] = "arbiter_clipdistance";
+  return renames;
+}
+std::string PositionGlobals(const TargetDialect& d) {
+  return std::string(kPositionGlobals) + (d.locations ? "float arbiter_clipdistance[8];\n" : "");
+}
 constexpr const char* kPositionInit =
     "  arbiter_position = vec4(0.0);\n  arbiter_pointsize = 0.0;\n";
 constexpr const char* kPositionSet = "  gl_Position = arbiter_pixel;\n  gl_PointSize = 1.0;\n";
@@ -213,7 +277,7 @@ constexpr const char* kPositionSet = "  gl_Position = arbiter_pixel;\n  gl_Point
 // max_attachments a pass, to a generated fragment shader.
 bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, const TargetDialect& d,
                 int max_attachments, std::vector<GlslPass>* passes, std::string* error) {
-  const std::string base = DropLines(t.vertex, kClampMarker);
+  const std::string base = DemoteOutputs(DropLines(t.vertex, kClampMarker), d);
   const size_t per_pass = static_cast<size_t>(std::clamp(max_attachments, 1, 8));
   for (size_t first = 0; first < plan.outputs.size(); first += per_pass) {
     GlslPass pass;
@@ -227,13 +291,13 @@ bool PlanVertex(const RunPlan& plan, const CheckedTranslation& t, const TargetDi
       std::string glsl;
       if (!ResultGlsl(t.bindings, b, arbvp::ProgramKind::Vertex, &glsl, error)) return false;
       const std::string carrier = fmt::format("arbiter_out{}", k);
-      outs += SendDeclaration(d, carrier);
-      ins += ReceiveDeclaration(d, carrier);
-      copies += Send(d, carrier, AsVec4(b, RenameIdentifiers(glsl, kPositionRenames)));
+      outs += SendDeclaration(d, carrier, static_cast<int>(k));
+      ins += ReceiveDeclaration(d, carrier, static_cast<int>(k));
+      copies += Send(d, carrier, AsVec4(b, RenameIdentifiers(glsl, PositionRenames(d))));
       reads += fmt::format("  {} = {};\n", Attachment(d, k), Receive(d, carrier));
       pass.attachments.push_back(static_cast<int>(s));
     }
-    if (!AdaptMain(base, kPositionRenames, kPositionGlobals + PixelDeclaration(plan, d) + outs,
+    if (!AdaptMain(base, PositionRenames(d), PositionGlobals(d) + PixelDeclaration(plan, d) + outs,
                    &pass.vertex, error)) {
       return false;
     }
@@ -273,7 +337,7 @@ bool PassThroughVertex(const CheckedTranslation& t, const TargetDialect& d, std:
                        std::string* error) {
   std::string text = d.header;
   for (const GeneratedAttribute& a : FragmentInputAttributes()) {
-    text += fmt::format("{} vec4 {};\n", VertexIn(d), a.name);
+    text += fmt::format("{}{} vec4 {};\n", Location(d, a.location), VertexIn(d), a.name);
   }
   std::string copies;
   std::set<std::string> declared;
@@ -288,11 +352,17 @@ bool PassThroughVertex(const CheckedTranslation& t, const TargetDialect& d, std:
     // A varying the map wraps in a constructor is a float (the fog coordinate).
     const bool scalar = m.glsl != name;
     if (d.legacy_io) {
-      text += SendDeclaration(d, "arbiter_v_" + name);
+      text += SendDeclaration(d, "arbiter_v_" + name, -1);
       copies += Send(d, "arbiter_v_" + name, attribute);
       continue;
     }
-    text += fmt::format("{} {} {};\n", VertexOut(d), scalar ? "float" : "vec4", name);
+    const int location = DeclaredLocation(t.fragment, name);
+    if (d.locations && location < 0) {
+      *error = fmt::format("the translation declares no location for fragment input {}", name);
+      return false;
+    }
+    text += fmt::format("{}{} {} {};\n", Location(d, location), VertexOut(d),
+                        scalar ? "float" : "vec4", name);
     copies += fmt::format("  {} = {}{};\n", name, attribute, scalar ? ".x" : "");
   }
   *out = text + SendFunctions(d) +
@@ -324,17 +394,17 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
       base = DropLines(base, fmt::format("varying {} {};", type, name));
     }
     const std::string declaration = fmt::format("{} {};\n", scalar ? "float" : "vec4", name);
-    received_globals += declaration + ReceiveDeclaration(d, carrier);
+    received_globals += declaration + ReceiveDeclaration(d, carrier, -1);
     receives += fmt::format("  {} = {}{};\n", name, Receive(d, carrier), scalar ? ".x" : "");
-    sent_globals += declaration + SendDeclaration(d, carrier);
+    sent_globals += declaration + SendDeclaration(d, carrier, -1);
     sends += Send(d, carrier, scalar ? fmt::format("vec4({}, 0.0, 0.0, 0.0)", name) : name);
   }
   if (plan.mode == RunMode::Fragment) {
     if (!PassThroughVertex(t, d, &vertex, error)) return false;
   } else {
     for (const std::string& name : varyings) base = MakeFlat(base, d, "out", name);
-    if (!AdaptMain(base, kPositionRenames,
-                   kPositionGlobals + PixelDeclaration(plan, d) + sent_globals, &vertex, error)) {
+    if (!AdaptMain(base, PositionRenames(d),
+                   PositionGlobals(d) + PixelDeclaration(plan, d) + sent_globals, &vertex, error)) {
       return false;
     }
     vertex += SendFunctions(d) + fmt::format("\nvoid main() {{\n{}  arbiter_main();\n{}{}}}\n",
@@ -391,6 +461,40 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
 
 }  // namespace
 
+bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling, arbvp::Vec4* out) {
+  auto index = [&](const char* prefix, int* n) {
+    const size_t length = std::char_traits<char>::length(prefix);
+    if (spelling.compare(0, length, prefix) != 0) return false;
+    *n = std::atoi(spelling.c_str() + length);
+    return true;
+  };
+  int n = 0;
+  if (spelling == "vertex.position" || spelling == "vertex.attrib[0]") {
+    *out = in.position;
+  } else if (index("vertex.attrib[", &n) && n > 0 && n < arbvp::kMaxGenericAttribs) {
+    *out = in.generic[static_cast<size_t>(n)];
+  } else if (spelling == "vertex.normal") {
+    *out = in.normal;
+  } else if (spelling == "vertex.color" || spelling == "vertex.color.primary") {
+    *out = in.color;
+  } else if (spelling == "vertex.color.secondary") {
+    *out = in.secondary_color;
+  } else if (spelling == "vertex.fogcoord") {
+    *out = in.fogcoord;
+  } else if (spelling == "vertex.texcoord") {
+    *out = in.texcoord[0];
+  } else if (index("vertex.texcoord[", &n) && n >= 0 && n < arbvp::kMaxTextureCoords) {
+    *out = in.texcoord[static_cast<size_t>(n)];
+  } else if (spelling == "vertex.weight" || spelling == "vertex.weight[0]") {
+    *out = in.weight;
+  } else if (spelling == "vertex.matrixindex" || spelling == "vertex.matrixindex[0]") {
+    *out = in.matrix_index;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 TargetDialect DialectOf(arbvp::EmitTarget target) {
   TargetDialect d;
   d.target = target;
@@ -401,6 +505,10 @@ TargetDialect DialectOf(arbvp::EmitTarget target) {
     case arbvp::EmitTarget::Es100:
       d.legacy_io = true;
       d.header = "#version 100\nprecision highp float;\nprecision highp int;\n";
+      break;
+    case arbvp::EmitTarget::Vk450:
+      d.locations = true;
+      d.header = "#version 450\n";
       break;
     default:
       d.header = "#version 330 core\n";

@@ -1,4 +1,4 @@
-// Adapting a target translation (glsl330, es300, es100: state as uniforms, named varyings
+// Adapting a target translation (glsl330, es300, es100, vk450: state as uniforms, named varyings
 // and outputs) for readback, the way glsl_adapt.h adapts the GLSL 1.10 one: its `main`
 // becomes `arbiter_main`, and a generated `main` calls it and copies the results to colour
 // attachments. What a result is called is read from the translation's binding map
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arbiter/arbvp/emit.h"
+#include "arbiter/arbvp/exec.h"
 #include "arbiter/runtime/translate.h"
 #include "exec/program_rewrite.h"
 #include "exec_glsl/glsl_adapt.h"
@@ -21,9 +22,17 @@ struct TargetDialect {
   // GLSL ES 1.00: attribute/varying and gl_FragData (with GL_EXT_draw_buffers) instead of
   // in/out and layout-qualified fragment outputs.
   bool legacy_io = false;
+  // GLSL 4.50 for Vulkan: every stage input and output declares its location, as the
+  // translation's own do (`layout(location = N) in vec4 NAME;`).
+  bool locations = false;
   std::string header;  // "#version 330 core\n", with the default precisions in ES
 };
 TargetDialect DialectOf(arbvp::EmitTarget target);
+
+// The model's value of the vertex attribute the binding map spells `spelling`
+// ("vertex.attrib[3]", "vertex.color.secondary"); false for a spelling of no model input.
+[[nodiscard]] bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling,
+                                  arbvp::Vec4* out);
 
 // Plans the passes for `plan` (from PlanRun on the same programs) and `translation` (of
 // dialect.target). False (with `error`) when the translation or its binding map does not

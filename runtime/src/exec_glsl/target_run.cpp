@@ -22,6 +22,7 @@
 #include "exec_glsl/glsl_program.h"
 #include "exec_glsl/glsl_run.h"
 #include "exec_glsl/target_adapt.h"
+#include "vulkan/engine.h"
 
 namespace arbiter::runtime {
 namespace {
@@ -42,41 +43,6 @@ bool HasExtension(const std::string& extensions, const std::string& name) {
     if (word == name) return true;
   }
   return false;
-}
-
-// The model's value of the vertex attribute the binding map spells `spelling`.
-bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling, arbvp::Vec4* out) {
-  auto index = [&](const char* prefix, int* n) {
-    const size_t length = std::char_traits<char>::length(prefix);
-    if (spelling.compare(0, length, prefix) != 0) return false;
-    *n = std::atoi(spelling.c_str() + length);
-    return true;
-  };
-  int n = 0;
-  if (spelling == "vertex.position" || spelling == "vertex.attrib[0]") {
-    *out = in.position;
-  } else if (index("vertex.attrib[", &n) && n > 0 && n < arbvp::kMaxGenericAttribs) {
-    *out = in.generic[static_cast<size_t>(n)];
-  } else if (spelling == "vertex.normal") {
-    *out = in.normal;
-  } else if (spelling == "vertex.color" || spelling == "vertex.color.primary") {
-    *out = in.color;
-  } else if (spelling == "vertex.color.secondary") {
-    *out = in.secondary_color;
-  } else if (spelling == "vertex.fogcoord") {
-    *out = in.fogcoord;
-  } else if (spelling == "vertex.texcoord") {
-    *out = in.texcoord[0];
-  } else if (index("vertex.texcoord[", &n) && n >= 0 && n < arbvp::kMaxTextureCoords) {
-    *out = in.texcoord[static_cast<size_t>(n)];
-  } else if (spelling == "vertex.weight" || spelling == "vertex.weight[0]") {
-    *out = in.weight;
-  } else if (spelling == "vertex.matrixindex" || spelling == "vertex.matrixindex[0]") {
-    *out = in.matrix_index;
-  } else {
-    return false;
-  }
-  return true;
 }
 
 // The point's clip position goes to the highest location no attribute of the map holds
@@ -178,7 +144,7 @@ class MesaTargetEngine final : public TargetEngine {
       for (const arbvp::AttributeBinding& a : map.attributes) {
         arbvp::Vec4 value{};
         if (a.location < 0 || a.location >= kLocations ||
-            !AttributeValue(v.vertex, a.binding, &value)) {
+            !exec::AttributeValue(v.vertex, a.binding, &value)) {
           *error = fmt::format("no input of the model feeds the attribute {} ({}, location {})",
                                a.name, a.binding, a.location);
           return {};
@@ -312,6 +278,8 @@ class MesaTargetEngine final : public TargetEngine {
 
 std::unique_ptr<TargetEngine> CreateTargetEngine(arbvp::EmitTarget target,
                                                  const std::string& driver, std::string* error) {
+  // vulkan-spirv: lavapipe whatever `driver` says (Mesa's one Vulkan driver without a GPU).
+  if (target == arbvp::EmitTarget::Vk450) return vulkan::CreateVulkanEngine(error);
   exec::EglApi api = exec::EglApi::Core33;
   if (target == arbvp::EmitTarget::Es300) {
     api = exec::EglApi::Es3;

@@ -34,9 +34,9 @@ class TargetEngine {
 };
 
 // The engine of `target` (Glsl330, Es300 or Es100) on a new EGL context of `driver` (a
-// supported Mesa driver, validated by the caller). Null (with `error`) when the context
-// cannot be made or lacks what readback needs (float colour attachments; ES 2.0 also
-// GL_EXT_draw_buffers).
+// supported Mesa driver, validated by the caller); of Vk450 on lavapipe (vulkan/engine.h). Null
+// (with `error`) when the context cannot be made or lacks what readback needs (float colour
+// attachments; ES 2.0 also GL_EXT_draw_buffers).
 [[nodiscard]] std::unique_ptr<TargetEngine> CreateTargetEngine(arbvp::EmitTarget target,
                                                                const std::string& driver,
                                                                std::string* error);

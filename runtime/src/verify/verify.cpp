@@ -103,11 +103,12 @@ struct Engines {
 // The deviations of a target engine are mesa-glsl's (the same compiler runs the same
 // GLSL); on the ES engines also llvmpipe-cube-edge on every driver: OpenGL ES 3.0 filters
 // cube maps seamlessly (ES 3.0 section 3.8.9.1), across the face edges that GL 2.0 and the
-// interpreter clamp at.
+// interpreter clamp at. vulkan-spirv runs on lavapipe, llvmpipe's compiler, whatever the
+// driver option says (and Vulkan's cube maps are seamless too: llvmpipe-cube-edge).
 uint32_t Deviations(const std::string& engine, const VerifyOptions& options) {
   const bool target = engine != kEngineMesaArb && engine != kEngineMesaGlsl;
-  uint32_t mask =
-      arbvp::ApplicableDeviations(target ? kEngineMesaGlsl : engine, options.exec.driver);
+  const std::string driver = engine == kEngineVulkanSpirv ? "llvmpipe" : options.exec.driver;
+  uint32_t mask = arbvp::ApplicableDeviations(target ? kEngineMesaGlsl : engine, driver);
   if (engine == kEngineMesaEs300 || engine == kEngineMesaEs100) {
     for (const arbvp::DeviationInfo& d : arbvp::KnownDeviations()) {
       if (d.name == "llvmpipe-cube-edge") mask |= static_cast<uint32_t>(d.bit);

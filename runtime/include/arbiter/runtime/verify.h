@@ -23,10 +23,13 @@ inline constexpr const char* kEngineRef = "ref";
 inline constexpr const char* kEngineMesaArb = "mesa-arb";
 inline constexpr const char* kEngineMesaGlsl = "mesa-glsl";
 // The target engines (docs/verify.md): each target's translation, state as uniforms fed
-// through the binding map and the host library (glstate), on an EGL context of its API.
+// through the binding map and the host library (glstate), on an EGL context of its API (on
+// a Vulkan device for vulkan-spirv).
 inline constexpr const char* kEngineMesaGlsl330 = "mesa-glsl330";  // desktop 3.3 core profile
 inline constexpr const char* kEngineMesaEs300 = "mesa-es300";      // OpenGL ES 3.0
 inline constexpr const char* kEngineMesaEs100 = "mesa-es100";      // OpenGL ES 2.0
+// The vk450 translation compiled to SPIR-V and run on Mesa's lavapipe (Vulkan).
+inline constexpr const char* kEngineVulkanSpirv = "vulkan-spirv";
 // The target engines and the translation target each runs.
 struct TargetEngineInfo {
   const char* name;
@@ -36,6 +39,7 @@ inline constexpr TargetEngineInfo kTargetEngines[] = {
     {kEngineMesaGlsl330, arbvp::EmitTarget::Glsl330},
     {kEngineMesaEs300, arbvp::EmitTarget::Es300},
     {kEngineMesaEs100, arbvp::EmitTarget::Es100},
+    {kEngineVulkanSpirv, arbvp::EmitTarget::Vk450},
 };
 
 struct VerifyOptions {
@@ -49,7 +53,8 @@ struct VerifyOptions {
   bool mesa_glsl = true;
   arbvp::EmitOptions emit;  // the translation mesa-glsl runs (a test-only mutation included)
   // The target engines to run (kTargetEngines' names), with emit's mutation; always on EGL
-  // (OSMesa makes no core or ES context), whatever exec.backend says.
+  // (OSMesa makes no core or ES context), whatever exec.backend says; vulkan-spirv on
+  // lavapipe, whatever exec.driver says.
   std::vector<std::string> targets;
 };
 
