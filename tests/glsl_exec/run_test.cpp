@@ -3,7 +3,9 @@
 // context; one process per combination (tests/glsl_exec/CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 
 #include "arbiter/arbvp/exec_io.h"
@@ -76,6 +78,26 @@ class GlslRun {
     std::string error;
     ASSERT_TRUE(arbvp::ApplyAssignment(assignment, &arb, &arb.vectors[0], &error)) << error;
     inputs_.state = arb.state;
+  }
+
+  void Texture(const std::string& flag) {
+    arbvp::ExecInputs arb;
+    arb.textures = inputs_.textures;
+    std::string error;
+    ASSERT_TRUE(arbvp::ApplyTextureFlag(flag, &arb, &error)) << error;
+    inputs_.textures = arb.textures;
+  }
+
+  // The same run in a worker process (results carried back as JSON).
+  const GlslRunResult& RunInWorker() {
+    ExecOptions options;
+    EXPECT_TRUE(ParseBackend(Env("ARBITER_TEST_BACKEND", "osmesa"), &options.backend));
+    options.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
+    std::string error;
+    EXPECT_EQ(RunGlslInWorker(options, WorkerLimits{}, shaders_, inputs_, &result_, &error),
+              WorkerStatus::Ok)
+        << error;
+    return result_;
   }
 
   const GlslRunResult& Run() {
@@ -223,6 +245,54 @@ TEST(GlslExecTest, PairClampsColoursBetweenTheStages) {
   EXPECT_EQ(run.Output("gl_FrontColor"), (V{2, -1, 0.5f, 1}));
   EXPECT_EQ(run.Output("k"), (V{1.5f}));
   EXPECT_EQ(run.Output("gl_FragColor"), (V{1, 0, 0.5f, 1.5f}));
+}
+
+// A sampler reads the texture of the unit its uniform holds; bvec, ivec arrays and matrix
+// arrays take their values element by element (GL 2.0 2.15.3, Uniform*).
+TEST(GlslExecTest, SamplersBoolsIntsAndMatrixArrays) {
+  GlslRun run("",
+              "#version 120\n"
+              "uniform sampler2D tex;\n"
+              "uniform bvec2 flags;\n"
+              "uniform ivec3 counts[2];\n"
+              "uniform mat2 ms[2];\n"
+              "void main() {\n"
+              "  vec4 c = texture2D(tex, gl_TexCoord[0].xy);\n"
+              "  gl_FragColor = c + vec4(flags.y ? 1.0 : 0.0, float(counts[1].z), ms[1][1][0],\n"
+              "                          flags.x ? 1.0 : 0.0);\n"
+              "}\n");
+  // "gradient": each texel's centre coordinates as r and g; the texel at (0.25, 0.75) of a
+  // 2x2 texture is (0.25, 0.75, 0.5, 1) (nearest).
+  run.Texture("1=2d:gradient:2x2");
+  run.Uniform("tex=1");
+  run.Uniform("flags=0,1");
+  run.Uniform("counts[1]=4,5,6");
+  run.Uniform("ms=1,2,3,4,5,6,7,8");  // ms[1] = mat2(5, 6, 7, 8): ms[1][1][0] = 7
+  run.Set("gl_TexCoord[0]=0.25,0.75");
+  const GlslRunResult& result = run.Run();
+  EXPECT_EQ(run.Output("gl_FragColor"), (V{1.25f, 6.75f, 7.5f, 1}));
+  EXPECT_TRUE(result.notes.empty());
+}
+
+// Non-finite values and -0 survive the worker's JSON (GLSL 1.10 leaves x / 0 undefined;
+// Mesa computes x * (1 / 0)).
+TEST(GlslExecTest, NonFiniteValuesThroughTheWorker) {
+  GlslRun run(
+      "uniform vec4 u;\n"
+      "varying vec4 v;\n"
+      "void main() { gl_Position = gl_Vertex; v = u; }\n",
+      "");
+  run.Uniform("u=inf,-inf,nan,-0");
+  const GlslRunResult& result = run.RunInWorker();
+  ASSERT_EQ(result.vectors.size(), 1u);
+  const V v = run.Output("v");
+  ASSERT_EQ(v.size(), 4u);
+  EXPECT_EQ(v[0], std::numeric_limits<float>::infinity());
+  EXPECT_EQ(v[1], -std::numeric_limits<float>::infinity());
+  EXPECT_TRUE(std::isnan(v[2]));
+  EXPECT_EQ(v[3], 0.0f);
+  EXPECT_TRUE(std::signbit(v[3]));
+  EXPECT_FALSE(result.description.empty());
 }
 
 // Uniforms the shader uses that no --uniform sets are named, not silently zero.
