@@ -31,7 +31,8 @@ FAILURES = []
 # The inputs the commands read, copied into the other working directories.
 INPUT_TREES = ["corpus/arb", "corpus/glsl", "corpus/exec/arb-fp", "corpus/exec/arb-vp",
                "corpus/exec-deviations", "tests/golden/check", "tests/golden/link",
-               "tests/golden/exec", "tests/golden/translate", "tests/golden/verify"]
+               "tests/golden/exec", "tests/golden/exec-glsl", "tests/golden/translate",
+               "tests/golden/verify"]
 
 VALID = "corpus/arb/valid"
 VERIFY_SAMPLE = [f"{VALID}/{name}" for name in sorted(os.listdir(os.path.join(ROOT, VALID)))[::12]]
@@ -62,6 +63,10 @@ for fmt in ("text", "json"):
         (f"exec {fmt}", ["exec", "--format", fmt, "--engine", "all",
                          "tests/golden/exec/pair.vp", "tests/golden/exec/inputs/pair.fp"],
          False, []),
+        (f"exec glsl {fmt}", ["exec", "--format", fmt, "--vectors",
+                              "tests/golden/exec-glsl/inputs/pair.json",
+                              "tests/golden/exec-glsl/inputs/pair.vert",
+                              "tests/golden/exec-glsl/inputs/pair.frag"], False, []),
         (f"verify {fmt}", ["verify", "--format", fmt, "--vectors", "8"] + VERIFY_SAMPLE, True, []),
     ]
 COMMANDS += [
