@@ -192,6 +192,12 @@ int RunExec(const ExecCommandOptions& given) {
                          given.state,   given.textures, given.vectors, given.pair};
     return RunExecGlsl(glsl);
   }
+  if (given.pair) {
+    fmt::print(stderr,
+               "arbiter: error: --pair is for GLSL shaders: a vertex and a fragment program "
+               "given together always run as a pair\n");
+    return static_cast<int>(Exit::Usage);
+  }
   if (!given.uniforms.empty()) {
     fmt::print(stderr,
                "arbiter: error: --uniform sets GLSL uniforms; an ARB program's parameters are "

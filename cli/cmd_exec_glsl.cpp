@@ -148,6 +148,11 @@ bool BuildInputs(const ExecGlslOptions& options, const Loaded& loaded,
   }
   inputs->state = arb.state;
   inputs->textures = arb.textures;
+  if (loaded.vertex_reflection.samplers.empty() && loaded.fragment_reflection.samplers.empty()) {
+    for (const auto& [unit, texture] : inputs->textures) {
+      warnings->push_back(fmt::format("--texture {}: the shaders sample no texture", unit));
+    }
+  }
   for (const std::string& assignment : options.set) {
     std::string name;
     std::vector<float> values;

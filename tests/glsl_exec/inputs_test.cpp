@@ -77,6 +77,20 @@ TEST(GlslExecInputsTest, FragmentShaderAloneTakesItsInputs) {
   EXPECT_EQ(values, (std::vector<float>{0.5f, 0.25f}));
 }
 
+// gl_TexCoord indexed by a variable: every element of its declared size is read, no other.
+TEST(GlslExecInputsTest, TexCoordIndexedByAVariable) {
+  const glsl::Reflection r = Reflect(glsl::Stage::Fragment,
+                                     "#version 120\n"
+                                     "varying vec4 gl_TexCoord[2];\n"
+                                     "uniform int i;\n"
+                                     "void main() { gl_FragColor = gl_TexCoord[i]; }\n");
+  std::vector<std::string> read;
+  for (const GlslInputSlot& s : GlslInputSlots(nullptr, &r)) {
+    if (s.read) read.push_back(s.name);
+  }
+  EXPECT_EQ(read, (std::vector<std::string>{"gl_TexCoord[0]", "gl_TexCoord[1]"}));
+}
+
 TEST(GlslExecInputsTest, VectorsFile) {
   const glsl::Reflection r = Reflect(glsl::Stage::Vertex, kVertex);
   GlslExecInputs inputs;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "arbiter/arbvp/exec_io.h"
@@ -72,8 +73,13 @@ GlslInputSlot Builtin(std::string name, int components, int min_components, std:
   slot.min_components = min_components;
   slot.fill = std::move(fill);
   for (const glsl::BuiltinUse& use : read) {
-    // "gl_TexCoord" read with a variable index reads every element.
-    slot.read |= use.name == name || (name.starts_with(use.name + "[")) ||
+    // "gl_TexCoord" read with a variable index reads every element of its size.
+    bool element = false;
+    if (name.starts_with(use.name + "[")) {
+      const int index = std::atoi(name.c_str() + use.name.size() + 1);
+      element = index < std::max(use.components / 4, 1);
+    }
+    slot.read |= use.name == name || element ||
                  (name.starts_with(use.name + ".") && use.name == "gl_FragCoord");
   }
   slot.name = std::move(name);
