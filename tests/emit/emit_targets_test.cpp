@@ -193,6 +193,51 @@ TEST(EmitTargetsTest, ShadowLookupReadsDepthMode) {
   }
 }
 
+// Samplers a dialect lacks are 2D ones (sampler_emulation.cpp): a 1D texture N x 1 read at
+// t = 0.5 (0.5 q before a projective division), a rectangle one read at its texel
+// coordinates over textureSize; the binding map gives their 2D type, which UploadsAs2D reads.
+TEST(EmitTargetsTest, EmulatedSamplers) {
+  Checked c = CheckText("t.fp",
+                        "!!ARBfp1.0\nOPTION ARB_fragment_program_shadow;\nTEMP a, b, d;\n"
+                        "TEX a, fragment.texcoord[0], texture[0], 1D;\n"
+                        "TXP b, fragment.texcoord[0], texture[0], 1D;\n"
+                        "TXP d, fragment.texcoord[1], texture[1], SHADOW1D;\n"
+                        "TEX a, fragment.texcoord[2], texture[2], RECT;\n"
+                        "TXP b, fragment.texcoord[2], texture[2], RECT;\n"
+                        "TEX d, fragment.texcoord[3], texture[3], SHADOWRECT;\n"
+                        "ADD result.color, a, b;\nEND\n");
+  ASSERT_TRUE(c.program) << c.errors;
+  Translation t = EmitGlsl(*c.program, For(EmitTarget::Es300), c.source.get());
+  EXPECT_EQ(TargetErrors(EmitTarget::Es300, ProgramKind::Fragment, t.glsl), "");
+  for (const char* expected :
+       {"a = texture(arb_texture0, vec2(arb_texcoord0.x, 0.5));",
+        "b = textureProj(arb_texture0, vec4((arb_texcoord0).x, 0.5 * (arb_texcoord0).w, 0.0, "
+        "(arb_texcoord0).w));",
+        "d = arb_shadow(textureProj(arb_texture1, vec4((arb_texcoord1).x, 0.5 * "
+        "(arb_texcoord1).w, (arb_texcoord1).z, (arb_texcoord1).w)), arb_texture1_depthmode);",
+        "a = texture(arb_texture2, (arb_texcoord2.xy) / vec2(textureSize(arb_texture2, 0)));",
+        "b = textureProj(arb_texture2, vec4((arb_texcoord2).xy / "
+        "vec2(textureSize(arb_texture2, 0)), (arb_texcoord2).zw));",
+        "d = arb_shadow(texture(arb_texture3, vec3((arb_texcoord3.xyz).xy / "
+        "vec2(textureSize(arb_texture3, 0)), (arb_texcoord3.xyz).z)), arb_texture3_depthmode);",
+        "uniform highp sampler2D arb_texture0;  // texture[0], 1D",
+        "uniform highp sampler2DShadow arb_texture3;  // texture[3], SHADOWRECT"}) {
+    EXPECT_NE(t.glsl.find(expected), std::string::npos) << expected << "\n" << t.glsl;
+  }
+  ASSERT_EQ(t.bindings.samplers.size(), 4u);
+  for (const SamplerBinding& s : t.bindings.samplers) {
+    EXPECT_TRUE(UploadsAs2D(s)) << s.name << " " << s.type;
+  }
+  // GLSL 3.30 has them all; Vulkan has 1D samplers but no rectangle ones.
+  Translation core = EmitGlsl(*c.program, For(EmitTarget::Glsl330), c.source.get());
+  for (const SamplerBinding& s : core.bindings.samplers) EXPECT_FALSE(UploadsAs2D(s)) << s.name;
+  Translation vk = EmitGlsl(*c.program, For(EmitTarget::Vk450), c.source.get());
+  EXPECT_EQ(TargetErrors(EmitTarget::Vk450, ProgramKind::Fragment, vk.glsl), "");
+  for (const SamplerBinding& s : vk.bindings.samplers) {
+    EXPECT_EQ(UploadsAs2D(s), s.unit >= 2) << s.name;
+  }
+}
+
 // GLSL 1.10 with --state uniforms: the same uniforms, GLSL 1.10 keywords.
 TEST(EmitTargetsTest, Glsl110WithStateUniforms) {
   Checked c = Load("corpus/arb/valid/directional-light-two-sided.vp");
@@ -277,17 +322,22 @@ TEST(EmitTargetsTest, Refusals) {
   const std::string tex1d =
       "!!ARBfp1.0\nTEMP t;\nTEX t, fragment.texcoord[0], texture[0], 1D;\n"
       "MOV result.color, t;\nEND\n";
-  EXPECT_EQ(RefusalOf(EmitTarget::Es100, tex1d),
-            "3:42: TEX of a 1D texture: GLSL ES 1.00 has no 1D samplers");
-  EXPECT_EQ(RefusalOf(EmitTarget::Es300, tex1d),
-            "3:42: TEX of a 1D texture: GLSL ES 3.00 has no 1D samplers");
-  EXPECT_EQ(RefusalOf(EmitTarget::Glsl330, tex1d), "");
-  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, tex1d), "");
+  // 1D textures are emulated everywhere, rectangle ones where textureSize exists, their
+  // shadow forms where 2D shadow samplers do (EmulatedSamplers below).
+  for (EmitTarget t : kTargets) EXPECT_EQ(RefusalOf(t, tex1d), "") << EmitTargetName(t);
+  const std::string shadow1d =
+      "!!ARBfp1.0\nOPTION ARB_fragment_program_shadow;\n"
+      "TEX result.color, fragment.texcoord[0], texture[0], SHADOW1D;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, shadow1d),
+            "3:53: TEX of a SHADOW1D texture: GLSL ES 1.00 has no SHADOW1D samplers");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es300, shadow1d), "");
   const std::string rect =
       "!!ARBfp1.0\nTEX result.color, fragment.texcoord[0], texture[1], RECT;\nEND\n";
-  EXPECT_EQ(RefusalOf(EmitTarget::Vk450, rect),
-            "2:53: TEX of a RECT texture: GLSL 4.50 (Vulkan) has no RECT samplers");
-  EXPECT_EQ(RefusalOf(EmitTarget::Glsl330, rect), "");
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, rect),
+            "2:53: TEX of a RECT texture: GLSL ES 1.00 has no RECT samplers");
+  for (EmitTarget t : {EmitTarget::Glsl330, EmitTarget::Es300, EmitTarget::Vk450}) {
+    EXPECT_EQ(RefusalOf(t, rect), "") << EmitTargetName(t);
+  }
   // fragment.position and ARB_fragment_coord_conventions are emulated with state as uniforms
   // (FragPosition); GLSL 1.20 with built-in state has no layout qualifiers and no uniform.
   const std::string position = "!!ARBfp1.0\nMOV result.color, fragment.position;\nEND\n";

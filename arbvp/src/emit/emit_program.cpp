@@ -245,8 +245,8 @@ BindingMap MakeBindingMap(const Context& ctx) {
     map.parameters.push_back({EnvName(ctx, true), ctx.program.kind, true, ctx.local_size});
   }
   for (const auto& [unit, target] : ctx.samplers) {
-    map.samplers.push_back(
-        {SamplerName(unit), unit, target, SamplerType(target), SamplerBindingOf(ctx, unit)});
+    map.samplers.push_back({SamplerName(unit), unit, target, DialectSamplerType(ctx.target, target),
+                            SamplerBindingOf(ctx, unit)});
   }
   for (const auto& [name, s] : ctx.state) map.state.push_back(s);
   for (const auto& [name, r] : ctx.inputs) map.inputs.push_back(r);

@@ -11,6 +11,7 @@
 
 #include "arbiter/arbvp/emit.h"
 #include "emit/emit_context.h"
+#include "emit/glsl_rewrite.h"
 
 namespace arbiter::arbvp {
 namespace emit {
@@ -22,8 +23,6 @@ constexpr DialectRow kTargetRows[] = {
 #include "arbiter/arbvp/emit_targets.def"
 #undef ARBVP_EMIT_TARGET
 };
-
-bool IsIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The GLSL 1.30 overload for a GLSL 1.10 lookup function ("texture2DProjLod" ->
 // "textureProjLod"), and whether it is a shadow lookup; "" for other identifiers.
@@ -43,34 +42,6 @@ std::string ModernLookup(std::string_view name, bool* shadow) {
     return "texture" + std::string(rest);
   }
   return "";
-}
-
-// `text` with each identifier `f` replaced by what `replace` returns ("" keeps it); `//`
-// comments are copied as they are.
-template <typename F>
-std::string ReplaceIdentifiers(const std::string& text, F replace) {
-  std::string out;
-  out.reserve(text.size() + 64);
-  size_t i = 0;
-  while (i < text.size()) {
-    if (text.compare(i, 2, "//") == 0) {
-      size_t end = text.find('\n', i);
-      if (end == std::string::npos) end = text.size();
-      out.append(text, i, end - i);
-      i = end;
-      continue;
-    }
-    if (!IsIdentChar(text[i]) || (i > 0 && IsIdentChar(text[i - 1]))) {
-      out.push_back(text[i++]);
-      continue;
-    }
-    size_t end = i;
-    while (end < text.size() && IsIdentChar(text[end])) ++end;
-    const std::string word = text.substr(i, end - i);
-    i = end;
-    out += replace(word, text, &i);
-  }
-  return out;
 }
 
 // The GLSL 1.30 lookups: texture2D(...) -> texture(...); a shadow lookup returns a float
@@ -138,6 +109,7 @@ std::string FinishForTarget(const Context& ctx, std::string text) {
     // brought them to fragment shaders too. `enable` does not fail without it.
     extensions += "#extension GL_ARB_shader_texture_lod : enable\n";
   }
+  text = EmulateSamplers(row, text);
   if (row.modern) {
     bool shadow = false;
     text = ModernLookups(text, &shadow);
@@ -280,24 +252,24 @@ Untranslatable FindUntranslatable(const Program& program, const EmitOptions& opt
         info.signature == OpSignature::Sample || info.signature == OpSignature::TexD;
     if (sample) {
       bool has = true;
+      // 1D textures are 2D ones of height 1 where the dialect lacks them, rectangle ones 2D
+      // ones read through textureSize (sampler_emulation.cpp), so the dialect needs 2D
+      // shadow samplers for their shadow forms, and textureSize for rectangles.
       switch (inst.target) {
-        case TexTarget::Tex1D:
-          has = row.tex1d;
-          break;
         case TexTarget::Tex3D:
           has = row.tex3d;
           break;
         case TexTarget::Rect:
-          has = row.rect;
+          has = row.rect || row.modern;
           break;
         case TexTarget::Shadow1D:
-          has = row.shadow1d;
+          has = row.shadow1d || row.shadow;
           break;
         case TexTarget::Shadow2D:
           has = row.shadow;
           break;
         case TexTarget::ShadowRect:
-          has = row.rect && row.shadow;
+          has = (row.rect || row.modern) && row.shadow;
           break;
         default:
           break;

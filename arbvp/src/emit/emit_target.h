@@ -47,6 +47,12 @@ struct Context;
 struct Expr;
 struct DestTarget;
 
+// sampler_emulation.cpp: the sampler type of `target` in the dialect, its own or the 2D one
+// that emulates it (1D textures in GLSL ES, rectangle textures in ES 3.00 and Vulkan); and
+// `text` with the lookups of emulated samplers rewritten as the 2D lookups standing for them.
+std::string DialectSamplerType(const DialectRow& row, TexTarget target);
+std::string EmulateSamplers(const DialectRow& row, const std::string& text);
+
 // emit_target.cpp: the dialect's text from the GLSL 1.10 the emitter wrote (lookups,
 // ES 1.00's gl_FragDepthEXT and extensions, ES precision statements).
 std::string FinishForTarget(const Context& ctx, std::string text);

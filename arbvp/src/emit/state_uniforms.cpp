@@ -331,7 +331,7 @@ std::string UniformsDeclarations(Context& ctx) {
     out += fmt::format(
         "{}uniform {}{} {};  // texture[{}], {}\n",
         row.block ? fmt::format("layout(set = 0, binding = {}) ", kFirstSamplerBinding + unit) : "",
-        row.es ? "highp " : "", SamplerType(target), SamplerName(unit), unit,
+        row.es ? "highp " : "", DialectSamplerType(row, target), SamplerName(unit), unit,
         TexTargetName(target));
   }
   // Fragment colours.

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <set>
+
 namespace arbiter::runtime::exec {
 namespace {
 
@@ -54,18 +56,6 @@ GLint CompareFunc(arbvp::CompareFunc func) {
       return GL_ALWAYS;
   }
   return GL_LEQUAL;
-}
-
-GLint DepthMode(arbvp::DepthMode mode) {
-  switch (mode) {
-    case arbvp::DepthMode::Luminance:
-      return GL_LUMINANCE;
-    case arbvp::DepthMode::Intensity:
-      return GL_INTENSITY;
-    case arbvp::DepthMode::Alpha:
-      return GL_ALPHA;
-  }
-  return GL_LUMINANCE;
 }
 
 // Uploads level 0 (or one cube face) of `t` from `data` (RGBA, or one depth per texel).
@@ -135,17 +125,40 @@ bool Upload(const ExecGl& gl, int unit, const arbvp::Texture& t, bool compatibil
     gl.TexParameteri(target, GL_TEXTURE_COMPARE_MODE,
                      t.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE);
     gl.TexParameteri(target, GL_TEXTURE_COMPARE_FUNC, CompareFunc(t.compare_func));
-    if (compatibility) gl.TexParameteri(target, GL_DEPTH_TEXTURE_MODE, DepthMode(t.depth_mode));
+    if (compatibility)
+      gl.TexParameteri(target, GL_DEPTH_TEXTURE_MODE, DepthTextureMode(t.depth_mode));
   }
   return true;
 }
 
 }  // namespace
 
+GLint DepthTextureMode(arbvp::DepthMode mode) {
+  switch (mode) {
+    case arbvp::DepthMode::Luminance:
+      return GL_LUMINANCE;
+    case arbvp::DepthMode::Intensity:
+      return GL_INTENSITY;
+    case arbvp::DepthMode::Alpha:
+      return GL_ALPHA;
+  }
+  return GL_LUMINANCE;
+}
+
 bool UploadTextures(const ExecGl& gl, const std::map<int, arbvp::Texture>& textures,
-                    std::vector<GLuint>* created, std::string* error, bool compatibility) {
+                    std::vector<GLuint>* created, std::string* error, bool compatibility,
+                    const std::set<int>& as_2d) {
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (const auto& [unit, texture] : textures) {
+  for (const auto& [unit, model] : textures) {
+    arbvp::Texture flat;
+    const bool emulated = as_2d.count(unit) != 0 &&
+                          (model.dim == arbvp::TexDim::Tex1D || model.dim == arbvp::TexDim::Rect);
+    if (emulated) {  // the same texels as a 2D texture: N x 1, or W x H without levels
+      flat = model;
+      if (flat.dim == arbvp::TexDim::Tex1D) flat.height = 1;
+      flat.dim = arbvp::TexDim::Tex2D;
+    }
+    const arbvp::Texture& texture = emulated ? flat : model;
     if (unit < 0 || unit >= arbvp::kMaxTextureImageUnits) {
       *error =
           fmt::format("texture unit {} is outside 0..{}", unit, arbvp::kMaxTextureImageUnits - 1);

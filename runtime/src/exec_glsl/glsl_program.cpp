@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "arbiter/glstate/uniforms.h"
+#include "exec/textures.h"
 
 namespace arbiter::runtime::exec {
 namespace {
@@ -182,6 +183,12 @@ bool SetTargetUniforms(const ExecGl& gl, GLuint program, const arbvp::BindingMap
                        std::string* error) {
   glstate::GlState state = inputs.state;
   state.framebuffer_height = static_cast<float>(framebuffer_height);
+  for (const auto& [unit, texture] : inputs.textures) {  // read by shadow lookups
+    if (unit >= 0 && unit < glstate::kMaxTextureImageUnits) {
+      state.depth_texture_mode[static_cast<size_t>(unit)] =
+          static_cast<uint32_t>(DepthTextureMode(texture.depth_mode));
+    }
+  }
   for (const arbvp::ParameterArray& p : map.parameters) {
     const GLint location = gl.GetUniformLocation(program, p.name.c_str());
     if (location < 0) continue;  // optimised away

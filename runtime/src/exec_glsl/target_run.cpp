@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "arbiter/runtime/mesa.h"
@@ -220,8 +221,12 @@ class MesaTargetEngine final : public TargetEngine {
     gl_.DepthRangef(inputs.state.depth_near, inputs.state.depth_far);
     if (!Check("setting up the context", error)) return false;
     std::vector<GLuint> textures;
+    std::set<int> as_2d;  // the 1D and rectangle textures the translation emulates
+    for (const arbvp::SamplerBinding& s : map.samplers) {
+      if (arbvp::UploadsAs2D(s)) as_2d.insert(s.unit);
+    }
     bool ok = exec::UploadTextures(gl_, inputs.textures, &textures, error,
-                                   /*compatibility=*/false) &&
+                                   /*compatibility=*/false, as_2d) &&
               Check("creating the textures", error);
     if (ok) {
       exec::Framebuffer framebuffer(gl_);

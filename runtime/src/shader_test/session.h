@@ -86,6 +86,9 @@ class Session {
   // translate_state.cpp: --translate to a target that reads state from uniforms
   // (--translate=glsl330, es300, ...).
   bool StateUniforms() const { return translated_ && bindings_.state_uniforms; }
+  // The texture target a test's 1D or rectangle texture on `unit` is made with: GL_TEXTURE_2D
+  // where the translation emulates it with a 2D sampler (arbvp::UploadsAs2D), else `target`.
+  GLenum TranslatedTexTarget(GLenum target, int unit) const;
   int AttributeLocation(const std::string& binding) const;  // -1: the program has none
   std::string StandInFragmentShader(const std::string& vertex) const;
   std::string StandInVertexShader(const std::string& fragment);  // adds to bindings_

@@ -149,6 +149,7 @@ void Session::Texture(const std::vector<std::string>& a) {
     Error(fmt::format("unknown texture kind '{}'", kind));
   }
 
+  target = TranslatedTexTarget(target, unit);
   GLuint id = 0;
   gl_.ActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
   // A new texture has GL's initial GL_DEPTH_TEXTURE_MODE (--translate's state).
@@ -195,6 +196,16 @@ void Session::Texture(const std::vector<std::string>& a) {
   gl_.Enable(target);  // for the fixed-function fragment stage, as piglit does
 }
 
+GLenum Session::TranslatedTexTarget(GLenum target, int unit) const {
+  if (!StateUniforms() || (target != GL_TEXTURE_1D && target != GL_TEXTURE_RECTANGLE_ARB)) {
+    return target;
+  }
+  for (const arbvp::SamplerBinding& s : bindings_.samplers) {
+    if (s.unit == unit && arbvp::UploadsAs2D(s)) return GL_TEXTURE_2D;
+  }
+  return target;
+}
+
 void Session::TexParameter(const std::vector<std::string>& a) {
   if (a.size() < 3) Error("expected 'texparameter TARGET PARAMETER VALUE'");
   static constexpr std::array<std::pair<std::string_view, GLenum>, 6> kTargets{{
@@ -223,6 +234,9 @@ void Session::TexParameter(const std::vector<std::string>& a) {
     if (name == a[0]) target = value;
   }
   if (target == 0) Error(fmt::format("unknown texture target '{}'", a[0]));
+  GLint active = GL_TEXTURE0;
+  gl_.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  target = TranslatedTexTarget(target, active - GL_TEXTURE0);
   if (a[1] == "border_color") {
     if (a.size() != 6) Error("expected 'texparameter TARGET border_color (r, g, b, a)'");
     const float color[4] = {Float(a, 2), Float(a, 3), Float(a, 4), Float(a, 5)};
@@ -248,8 +262,6 @@ void Session::TexParameter(const std::vector<std::string>& a) {
     const GLenum value = Enum(name);
     gl_.TexParameteri(target, parameter, static_cast<GLint>(value));
     if (parameter == GL_DEPTH_TEXTURE_MODE) {  // for --translate's state as uniforms
-      GLint active = GL_TEXTURE0;
-      gl_.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
       const int unit = active - GL_TEXTURE0;
       if (unit >= 0 && unit < glstate::kMaxTextureImageUnits) {
         state_.depth_texture_mode[static_cast<size_t>(unit)] = value;

@@ -78,6 +78,16 @@ struct SamplerBinding {
   int binding = -1;  // Vulkan: the descriptor binding in set 0 (-1: none)
 };
 
+// Whether the host uploads the texture of `s` as a 2D texture: a 1D or rectangle target that
+// the dialect emulates with a 2D sampler (1D: N x 1; rectangle: W x H without levels;
+// docs/guide/translate.md, "Emulated samplers").
+inline bool UploadsAs2D(const SamplerBinding& s) {
+  const bool one_d = s.target == TexTarget::Tex1D || s.target == TexTarget::Shadow1D;
+  const bool rect = s.target == TexTarget::Rect || s.target == TexTarget::ShadowRect;
+  return (one_d || rect) && s.type.rfind("sampler2D", 0) == 0 &&
+         s.type.find("Rect") == std::string::npos;
+}
+
 // A uniform standing for GL state that GLSL 1.10 has no built-in for (program matrices,
 // modelview[n>0], palette matrices, clip planes beyond gl_MaxClipPlanes' minimum...).
 struct StateUniform {
