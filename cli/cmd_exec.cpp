@@ -233,6 +233,7 @@ int RunExec(const ExecCommandOptions& given) {
     // JSON: the diagnostics, and no results.
     if (json && exit != Exit::Usage) {
       std::vector<std::string> files;
+      files.reserve(loaded.size());
       for (const LoadedArb& p : loaded) files.push_back(p.input.display_path);
       PrintJson({}, {}, files, reports);
     }
@@ -294,6 +295,7 @@ int RunExec(const ExecCommandOptions& given) {
   std::vector<arbvp::Difference> diffs;
   if (runs.size() > 1) diffs = arbvp::CompareResults(runs[0].results, runs[1].results);
   std::vector<std::string> files;
+  files.reserve(loaded.size());
   for (const LoadedArb& p : loaded) files.push_back(p.source->path());
   if (options.common.format == "json") {
     PrintJson(runs, diffs, files, reports, warnings);

@@ -116,6 +116,7 @@ bool RunGlsl(const ExecOptions& options, const GlslShaders& shaders, const GlslE
     const std::string& name = inputs.uniforms[a].first;
     if (applied.count(a) == 0 && !Declared(inputs, name)) {
       std::vector<std::string> names;
+      names.reserve(active.size());
       for (const ActiveUniform& u : active) names.push_back(u.name);
       result->usage_error =
           fmt::format("--uniform {}: the shaders have no uniform '{}'{}", name, name,

@@ -83,11 +83,11 @@ std::string PassThroughShader(const std::vector<GlslInputSlot>& slots,
 // The user's vertex shader with its main renamed (a macro after #version), and the shader
 // object whose main calls it and then places the point.
 std::vector<std::string> PairVertexShaders(const std::string& user) {
-  static const std::regex kVersion(R"((^|\n)[ \t]*#[ \t]*version[^\n]*\n)");
+  static const std::regex version(R"((^|\n)[ \t]*#[ \t]*version[^\n]*\n)");
   std::smatch match;
   std::string renamed;
   const std::string define = "#define main arbiter_user_main\n";
-  if (std::regex_search(user, match, kVersion)) {
+  if (std::regex_search(user, match, version)) {
     const size_t end = static_cast<size_t>(match.position(0) + match.length(0));
     renamed = user.substr(0, end) + define + user.substr(end);
   } else {
@@ -101,7 +101,7 @@ std::vector<std::string> PairVertexShaders(const std::string& user) {
 }
 
 std::vector<float> Value(const std::map<std::string, std::vector<float>>& v,
-                         const std::string& name, std::vector<float> fallback) {
+                         const std::string& name, const std::vector<float>& fallback) {
   auto it = v.find(name);
   return it != v.end() ? it->second : fallback;
 }
@@ -130,6 +130,7 @@ bool RunFragment(const RunContext& run, std::vector<GlslVectorResult>* results,
   const GLuint program = PrepareProgram(run, spec, error);
   if (program == 0) return false;
   std::vector<GLint> feed_locations;
+  feed_locations.reserve(feeds.size());
   for (const Feed& feed : feeds) {
     feed_locations.push_back(gl.GetUniformLocation(program, feed.uniform.c_str()));
   }

@@ -245,7 +245,7 @@ bool ParseGlslVectorsJson(std::string_view text, GlslExecInputs* inputs, std::st
         }
         std::string numbers;
         if (!JsonNumbers(v, &numbers, error)) return false;
-        shared.push_back(name + "=" + numbers);
+        shared.push_back(fmt::format("{}={}", name, numbers));
       }
     } else if (key == "uniforms") {
       if (!value.is_object()) {
@@ -257,7 +257,8 @@ bool ParseGlslVectorsJson(std::string_view text, GlslExecInputs* inputs, std::st
         if (!JsonNumbers(v, &numbers, error)) return false;
         std::string parsed_name;
         std::vector<float> values;
-        if (!ParseGlslUniform(name + "=" + numbers, &parsed_name, &values, error)) return false;
+        if (!ParseGlslUniform(fmt::format("{}={}", name, numbers), &parsed_name, &values, error))
+          return false;
         inputs->uniforms.emplace_back(parsed_name, values);
       }
     } else if (key != "vectors") {
@@ -299,7 +300,8 @@ bool ParseGlslVectorsJson(std::string_view text, GlslExecInputs* inputs, std::st
       std::map<std::string, std::vector<float>> v = base;
       for (const auto& [name, value] : entry.items()) {
         std::string numbers;
-        if (!JsonNumbers(value, &numbers, error) || !apply(name + "=" + numbers, &v)) {
+        if (!JsonNumbers(value, &numbers, error) ||
+            !apply(fmt::format("{}={}", name, numbers), &v)) {
           return false;
         }
       }

@@ -158,6 +158,7 @@ void Upload(const Gl& gl, GLint location, const TypeInfo& type, GLsizei count,
             const std::vector<float>& values) {
   if (type.base == BaseKind::Int || type.base == BaseKind::Sampler || type.base == BaseKind::Bool) {
     std::vector<GLint> ints;
+    ints.reserve(values.size());
     for (float v : values) ints.push_back(static_cast<GLint>(v));
     switch (type.components) {
       case 1:
