@@ -333,6 +333,16 @@ TEST(EmitTargetsTest, Refusals) {
   EXPECT_EQ(RefusalOf(EmitTarget::Es300, shadow1d), "");
   const std::string rect =
       "!!ARBfp1.0\nTEX result.color, fragment.texcoord[0], texture[1], RECT;\nEND\n";
+  // The packing instructions need floatBitsToUint: GLSL 3.30, ES 3.00 and Vulkan have it.
+  const std::string pack =
+      "!!ARBfp1.0\nOPTION NV_fragment_program;\nTEMP t;\nPK2H t, fragment.color;\n"
+      "UP4UB result.color, t.x;\nEND\n";
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, pack),
+            "4:1: PK2H needs the bits of a float, which GLSL ES 1.00 cannot form "
+            "(floatBitsToUint: GLSL 3.30 and ES 3.00)");
+  for (EmitTarget t : {EmitTarget::Glsl330, EmitTarget::Es300, EmitTarget::Vk450}) {
+    EXPECT_EQ(RefusalOf(t, pack), "") << EmitTargetName(t);
+  }
   EXPECT_EQ(RefusalOf(EmitTarget::Es100, rect),
             "2:53: TEX of a RECT texture: GLSL ES 1.00 has no RECT samplers");
   for (EmitTarget t : {EmitTarget::Glsl330, EmitTarget::Es300, EmitTarget::Vk450}) {

@@ -37,7 +37,19 @@ using Comps = std::vector<int>;
 
 // Helper functions emitted before main() when a translation needs them.
 // A helper's text may call those before it.
-enum class Helper : uint8_t { Lit, Exp, Log, Half, RoundEven, Fp16, Fx12, Rcc, Rfl, Ssg };
+enum class Helper : uint8_t {
+  Lit,
+  Exp,
+  Log,
+  Half,
+  RoundEven,
+  Fp16,
+  Fx12,
+  Rcc,
+  Rfl,
+  Ssg,
+  Pack,  // the PK* / UP* conversions (GLSL 3.30 bit operations)
+};
 
 // The conversion an NV_fragment_program precision suffix applies to operands and results
 // (3.11.4.2): none (R, fp32), to fp16 (H), to fixed point s1.10 (X).

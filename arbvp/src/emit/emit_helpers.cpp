@@ -184,6 +184,50 @@ std::string RflText(const Context& ctx) {
       ctx.Mutated(Mutation::RflNoDouble) ? "" : "2.0 * ");
 }
 
+// The PK* and UP* conversions (NV_fragment_program_option 3.11.5), with GLSL 3.30's bit
+// operations: fp16 with round-to-nearest-even (a conversion that is not exact may take either
+// neighbour, and verify does not compare it), integer fields rounded from their scaled value.
+constexpr const char* kPackText =
+    "// PK2H / UP2H: a float's fp16 bits, rounded to nearest even (overflow to infinity);\n"
+    "// the float of fp16 bits.\n"
+    "uint arb_half_bits(float f) {\n"
+    "  uint b = floatBitsToUint(f);\n"
+    "  uint sign = (b >> 16) & 0x8000u;\n"
+    "  uint m = b & 0x7FFFFFu;\n"
+    "  int e = int((b >> 23) & 0xFFu);\n"
+    "  if (e == 255) return sign | 0x7C00u | (m != 0u ? 0x200u : 0u);\n"
+    "  int h = e - 112;  // the fp16 exponent\n"
+    "  if (h >= 31) return sign | 0x7C00u;\n"
+    "  uint shift = 13u;\n"
+    "  uint bits = (uint(max(h, 0)) << 10) | (m >> 13);\n"
+    "  if (h <= 0) {  // below fp16's normal range: the implicit 1 joins the fraction\n"
+    "    if (h < -10) return sign;\n"
+    "    m |= 0x800000u;\n"
+    "    shift = uint(14 - h);\n"
+    "    bits = m >> shift;\n"
+    "  }\n"
+    "  uint rest = m & ((1u << shift) - 1u);\n"
+    "  uint half_way = 1u << (shift - 1u);\n"
+    "  if (rest > half_way || (rest == half_way && (bits & 1u) != 0u)) bits += 1u;\n"
+    "  return sign | bits;\n"
+    "}\n"
+    "float arb_half_value(uint h) {\n"
+    "  uint e = (h >> 10) & 0x1Fu;\n"
+    "  uint m = h & 0x3FFu;\n"
+    "  float v = e == 0u ? float(m) * exp2(-24.0)\n"
+    "                    : uintBitsToFloat(((e == 31u ? 255u : e + 112u) << 23) | (m << 13));\n"
+    "  return (h & 0x8000u) != 0u ? -v : v;\n"
+    "}\n"
+    "// PK2US, PK4B, PK4UB: round(scale * clamp(v, lo, hi) + offset).\n"
+    "uint arb_pack_field(float v, float lo, float hi, float scale, float offset) {\n"
+    "  return uint(floor(scale * clamp(v, lo, hi) + offset + 0.5));\n"
+    "}\n"
+    "// UP2US, UP4B, UP4UB: field n of `width` bits, (field + offset) / divisor.\n"
+    "float arb_unpack_field(uint bits, uint n, uint width, float offset, float divisor) {\n"
+    "  uint field = (bits >> (n * width)) & ((1u << width) - 1u);\n"
+    "  return (float(field) + offset) / divisor;\n"
+    "}\n";
+
 }  // namespace
 
 std::string HelperText(const Context& ctx, Helper helper) {
@@ -208,6 +252,8 @@ std::string HelperText(const Context& ctx, Helper helper) {
       return RflText(ctx);
     case Helper::Ssg:
       return SsgText(ctx) + VectorForms("vec", "arb_ssg");
+    case Helper::Pack:
+      return kPackText;
   }
   return "";
 }

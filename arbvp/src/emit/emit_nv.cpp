@@ -15,13 +15,12 @@ namespace {
 // Arithmetic cannot stand in for them: packed bytes make NaN payloads and denormals, which
 // float arithmetic neither keeps nor forms. The translation refuses them with a line GLSL
 // rejects, naming the instruction.
-std::string Refused(std::string_view name) {
+std::string Refused(const Context& ctx, const Instruction& inst) {
   return fmt::format(
-      "#error arbiter cannot translate {} to GLSL 1.10: it needs the bits of a float "
-      "(floatBitsToUint, GLSL 3.30), which GLSL 1.10 cannot form exactly\n",
-      name);
+      "#error arbiter cannot translate {} to {}: it needs the bits of a float "
+      "(floatBitsToUint, GLSL 3.30 and ES 3.00)\n",
+      GetOpcodeInfo(inst.op).name, ctx.target.title);
 }
-
 // A constant result replicated to the written components (SFL, STR).
 std::string Constant(Context& ctx, const Instruction& inst, const char* value) {
   return Assign(ctx, inst, [&](const Comps& comps) {
@@ -158,10 +157,42 @@ std::string NRM(Context& ctx, const Instruction& inst) {
                      Call(fmt::format("vec4({0} * inversesqrt(dot({0}, {0})), 1.0)", v), 4));
 }
 
-std::string PK2H(Context&, const Instruction&) { return Refused("PK2H"); }
-std::string PK2US(Context&, const Instruction&) { return Refused("PK2US"); }
-std::string PK4B(Context&, const Instruction&) { return Refused("PK4B"); }
-std::string PK4UB(Context&, const Instruction&) { return Refused("PK4UB"); }
+// The packing instructions (NV_fragment_program_option 3.11.5.23-26): 32 bits made of the
+// operand's components, x in the least significant, as the float they form, replicated. Only
+// dialects with floatBitsToUint get here (FindUntranslatable).
+std::string Packed(Context& ctx, const Instruction& inst, const std::string& bits) {
+  if (!ctx.target.modern) return Refused(ctx, inst);
+  ctx.helpers.insert(Helper::Pack);
+  return WholeVector(ctx, inst, Call(fmt::format("vec4(uintBitsToFloat({}))", bits), 4));
+}
+
+std::string PK2H(Context& ctx, const Instruction& inst) {
+  auto s = [&](int c) { return Source(ctx, Src(inst, 0), {c}).text; };
+  return Packed(ctx, inst,
+                fmt::format("arb_half_bits({}) | (arb_half_bits({}) << 16)", s(0), s(1)));
+}
+std::string PK2US(Context& ctx, const Instruction& inst) {
+  auto f = [&](int c) {
+    return fmt::format("arb_pack_field({}, 0.0, 1.0, 65535.0, 0.0)",
+                       Source(ctx, Src(inst, 0), {c}).text);
+  };
+  return Packed(ctx, inst, fmt::format("{} | ({} << 16)", f(0), f(1)));
+}
+// PK4B: round(127 * clamp(v, -128/127, 1) + 128); PK4UB: round(255 * clamp(v, 0, 1)).
+std::string PackBytes(Context& ctx, const Instruction& inst, const char* range) {
+  std::string bits;
+  for (int c = 0; c < 4; ++c) {
+    bits += fmt::format("{}(arb_pack_field({}, {}) << {}u)", c ? " | " : "",
+                        Source(ctx, Src(inst, 0), {c}).text, range, 8 * c);
+  }
+  return Packed(ctx, inst, bits);
+}
+std::string PK4B(Context& ctx, const Instruction& inst) {
+  return PackBytes(ctx, inst, "-128.0 / 127.0, 1.0, 127.0, 128.0");
+}
+std::string PK4UB(Context& ctx, const Instruction& inst) {
+  return PackBytes(ctx, inst, "0.0, 1.0, 255.0, 0.0");
+}
 
 // RCC: the reciprocal clamped to [2^-64, 2^64] or [-2^64, -2^-64] (see arb_rcc).
 std::string RCC(Context& ctx, const Instruction& inst) {
@@ -212,10 +243,40 @@ std::string SSG(Context& ctx, const Instruction& inst) {
   });
 }
 
-std::string UP2H(Context&, const Instruction&) { return Refused("UP2H"); }
-std::string UP2US(Context&, const Instruction&) { return Refused("UP2US"); }
-std::string UP4B(Context&, const Instruction&) { return Refused("UP4B"); }
-std::string UP4UB(Context&, const Instruction&) { return Refused("UP4UB"); }
+// The unpacking instructions (3.11.5.37-40): the bits of the operand's x, in fields from the
+// least significant; two-field forms repeat them in z and w.
+std::string Unpacked(Context& ctx, const Instruction& inst, const std::string& pattern) {
+  if (!ctx.target.modern) return Refused(ctx, inst);
+  ctx.helpers.insert(Helper::Pack);
+  const std::string bits = fmt::format("floatBitsToUint({})", Source(ctx, Src(inst, 0), {0}).text);
+  return WholeVector(ctx, inst, Call(fmt::format(fmt::runtime(pattern), bits), 4));
+}
+std::string UP2H(Context& ctx, const Instruction& inst) {
+  return Unpacked(ctx, inst,
+                  "vec4(arb_half_value({0} & 0xFFFFu), arb_half_value({0} >> 16),"
+                  " arb_half_value({0} & 0xFFFFu), arb_half_value({0} >> 16))");
+}
+std::string UP2US(Context& ctx, const Instruction& inst) {
+  return Unpacked(ctx, inst,
+                  "vec4(arb_unpack_field({0}, 0u, 16u, 0.0, 65535.0),"
+                  " arb_unpack_field({0}, 1u, 16u, 0.0, 65535.0),"
+                  " arb_unpack_field({0}, 0u, 16u, 0.0, 65535.0),"
+                  " arb_unpack_field({0}, 1u, 16u, 0.0, 65535.0))");
+}
+std::string UP4B(Context& ctx, const Instruction& inst) {
+  return Unpacked(ctx, inst,
+                  "vec4(arb_unpack_field({0}, 0u, 8u, -128.0, 127.0),"
+                  " arb_unpack_field({0}, 1u, 8u, -128.0, 127.0),"
+                  " arb_unpack_field({0}, 2u, 8u, -128.0, 127.0),"
+                  " arb_unpack_field({0}, 3u, 8u, -128.0, 127.0))");
+}
+std::string UP4UB(Context& ctx, const Instruction& inst) {
+  return Unpacked(ctx, inst,
+                  "vec4(arb_unpack_field({0}, 0u, 8u, 0.0, 255.0),"
+                  " arb_unpack_field({0}, 1u, 8u, 0.0, 255.0),"
+                  " arb_unpack_field({0}, 2u, 8u, 0.0, 255.0),"
+                  " arb_unpack_field({0}, 3u, 8u, 0.0, 255.0))");
+}
 
 // X2D: a.xy + (b.x * c.x + b.y * c.y, b.x * c.z + b.y * c.w), written to (x, y, x, y) in
 // the specification's order of operations.

@@ -227,11 +227,11 @@ Untranslatable FindUntranslatable(const Program& program, const EmitOptions& opt
   Untranslatable base = FindUntranslatable(program);
   const emit::DialectRow& row = emit::GetDialectRow(options.target);
   if (row.id == EmitTarget::Glsl110) return base;
-  if (!base.what.empty()) {
-    // The emitter forms no float bits on any target yet (GLSL 3.30 and ES 3.00 could).
+  if (!base.what.empty() && !row.modern) {
+    // The bits of a float: floatBitsToUint (GLSL 3.30, ES 3.00, Vulkan).
     const std::string op = base.what.substr(0, base.what.find(' '));
-    return {fmt::format("{} needs the bits of a float, which arbiter's {} translation does not "
-                        "form yet",
+    return {fmt::format("{} needs the bits of a float, which {} cannot form (floatBitsToUint: "
+                        "GLSL 3.30 and ES 3.00)",
                         op, row.title),
             base.range};
   }

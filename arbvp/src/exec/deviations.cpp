@@ -35,6 +35,10 @@ const std::vector<DeviationInfo>& KnownDeviations() {
        "a NaN that IEEE arithmetic makes of infinities (inf - inf): Mesa's compilers use "
        "identities that hold for finite numbers only (x - x = 0 in XPD of a vector with "
        "itself, a * b + a = a * (b + 1)) and give 0 or an infinity"},
+      {kDevPointFacingSoftpipe, "softpipe-point-facing", false, false, "softpipe",
+       "fragment.facing of a point on a core or ES context (the target engines): points are "
+       "front-facing (OpenGL 3.3 section 3.6.1), softpipe's gl_FrontFacing says back-facing "
+       "(llvmpipe and the compatibility contexts say front-facing)"},
   };
   return kTable;
 }

@@ -143,8 +143,11 @@ Reg FragmentAttribValue(const Binding& b, const FragmentSource& f) {
       return {f.fogcoord, Val{0.0f}, Val{0.0f}, Val{1.0f}};
     case FragmentAttrib::Position:
       return f.position;
-    case FragmentAttrib::Facing:  // NV_fragment_program2: +1 for the front-facing points drawn
-      return exec::DefinedReg({1.0f, 0.0f, 0.0f, 1.0f});
+    case FragmentAttrib::Facing: {  // NV_fragment_program2: +1 for the front-facing points drawn
+      Reg facing = exec::DefinedReg({1.0f, 0.0f, 0.0f, 1.0f});
+      facing[0].dev |= kDevPointFacingSoftpipe;
+      return facing;
+    }
   }
   return exec::DefinedReg({0.0f, 0.0f, 0.0f, 1.0f});
 }

@@ -151,10 +151,10 @@ std::vector<arbvp::RegisterMapping> FragmentInputs(const CheckedTranslation& t) 
   std::vector<arbvp::RegisterMapping> inputs;
   bool fog = false;
   for (const arbvp::RegisterMapping& m : t.bindings.inputs) {
-    // fragment.position reads gl_FragCoord, flipped or shifted where the dialect differs
-    // (an expression of it), never a varying.
+    // fragment.position and fragment.facing read gl_FragCoord and gl_FrontFacing (in an
+    // expression where the dialect differs), never a varying.
     if (m.stage != arbvp::ProgramKind::Fragment || m.glsl.rfind("gl_", 0) == 0 ||
-        m.binding == "fragment.position") {
+        m.binding == "fragment.position" || m.binding == "fragment.facing") {
       continue;
     }
     inputs.push_back(m);

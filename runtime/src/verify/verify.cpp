@@ -12,6 +12,7 @@
 #include "arbiter/arbvp/deviations.h"
 #include "arbiter/arbvp/exec_io.h"
 #include "arbiter/arbvp/interpret.h"
+#include "arbiter/runtime/translate.h"
 #include "exec/context.h"
 #include "exec_glsl/target_run.h"
 #include "verify/verdict_json.h"
@@ -104,7 +105,8 @@ struct Engines {
 // GLSL); on the ES engines also llvmpipe-cube-edge on every driver: OpenGL ES 3.0 filters
 // cube maps seamlessly (ES 3.0 section 3.8.9.1), across the face edges that GL 2.0 and the
 // interpreter clamp at. vulkan-spirv runs on lavapipe, llvmpipe's compiler, whatever the
-// driver option says (and Vulkan's cube maps are seamless too: llvmpipe-cube-edge).
+// driver option says (and Vulkan's cube maps are seamless too: llvmpipe-cube-edge). On
+// softpipe the GL target engines' points are back-facing (softpipe-point-facing).
 uint32_t Deviations(const std::string& engine, const VerifyOptions& options) {
   const bool target = engine != kEngineMesaArb && engine != kEngineMesaGlsl;
   const std::string driver = engine == kEngineVulkanSpirv ? "llvmpipe" : options.exec.driver;
@@ -113,6 +115,10 @@ uint32_t Deviations(const std::string& engine, const VerifyOptions& options) {
     for (const arbvp::DeviationInfo& d : arbvp::KnownDeviations()) {
       if (d.name == "llvmpipe-cube-edge") mask |= static_cast<uint32_t>(d.bit);
     }
+  }
+  // softpipe draws the points of a core or ES context as sprites it calls back-facing.
+  if (target && engine != kEngineVulkanSpirv && driver == "softpipe") {
+    mask |= arbvp::kDevPointFacingSoftpipe;
   }
   return mask;
 }
@@ -138,6 +144,16 @@ Verdict VerifyOne(Engines* engines, const VerifySubject& subject, const VerifyOp
     std::string not_applicable;
     ArbExecutor* executor = engines->executor.get();
     auto target = engines->targets.find(engine);
+    if (engine == kEngineMesaGlsl) {
+      // A program GLSL 1.10 cannot express (PK*/UP*: no bit casts) has no mesa-glsl run, as
+      // a target engine has none for what its target refuses.
+      const CheckedTranslation t = EmitTranslation(subject.vertex, subject.fragment, options.emit,
+                                                   subject.vertex_source, subject.fragment_source);
+      if (t.refused) {
+        verdict.not_applicable[engine] = t.error;
+        continue;
+      }
+    }
     for (const arbvp::InputBatch& batch : p.batches) {
       std::vector<arbvp::VectorResult> results;
       bool ok = false;

@@ -21,6 +21,8 @@ enum Deviation : uint32_t {
   kDevMirrorCentreSoftpipe = 1u << 6,  // a linear mirrored lookup at a texel centre: softpipe
   kDevNanCompareFolded = 1u << 7,      // SGE/SLT of a NaN: the GLSL compiler's folded compare
   kDevNanFromInfinities = 1u << 8,     // inf - inf: Mesa's finite-number identities avoid it
+  kDevPointFacingSoftpipe = 1u << 9,   // fragment.facing of a point: softpipe's core and ES
+                                       // contexts say back-facing
 };
 
 struct DeviationInfo {
