@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <functional>
 #include <set>
+#include <string_view>
 
 namespace arbiter::runtime::exec {
 namespace {
@@ -81,67 +83,64 @@ size_t LayoutPrefix(const std::string& line) {
   return close == std::string::npos ? 0 : close + 2;
 }
 
-// The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`, after
-// a layout qualifier in Vulkan) made flat, where the dialect has it.
-std::string MakeFlat(const std::string& text, const TargetDialect& d, const char* keyword,
-                     const std::string& name) {
-  if (d.legacy_io) return text;
+// `text` with each line (its '\n' included) replaced by what `edit` makes of it.
+std::string EditLines(const std::string& text,
+                      const std::function<std::string(const std::string&)>& edit) {
   std::string out;
   size_t begin = 0;
   while (begin < text.size()) {
     size_t end = text.find('\n', begin);
     end = end == std::string::npos ? text.size() : end + 1;
-    std::string line = text.substr(begin, end - begin);
-    const size_t layout = LayoutPrefix(line);
-    for (const char* type : {" vec4 ", " float "}) {
-      const std::string declaration = keyword + std::string(type) + name + ";";
-      if (line.compare(layout, declaration.size(), declaration) == 0) {
-        line.insert(layout, "flat ");
-        break;
-      }
-    }
-    out += line;
+    out += edit(text.substr(begin, end - begin));
     begin = end;
   }
   return out;
 }
 
+// The translation's declaration of varying `name` (`in vec4 NAME;`, `out float NAME;`, after
+// a layout qualifier in Vulkan) made flat, where the dialect has it.
+std::string MakeFlat(const std::string& text, const TargetDialect& d, const char* keyword,
+                     const std::string& name) {
+  if (d.legacy_io) return text;
+  return EditLines(text, [&](const std::string& line) {
+    const size_t layout = LayoutPrefix(line);
+    for (const char* type : {" vec4 ", " float "}) {
+      const std::string declaration = keyword + std::string(type) + name + ";";
+      if (line.compare(layout, declaration.size(), declaration) == 0) {
+        return line.substr(0, layout) + "flat " + line.substr(layout);
+      }
+    }
+    return line;
+  });
+}
+
 // The location the translation declares for its stage input `name` (`layout(location = N)
 // in vec4 NAME;`), or -1.
 int DeclaredLocation(const std::string& text, const std::string& name) {
-  size_t begin = 0;
-  while (begin < text.size()) {
-    size_t end = text.find('\n', begin);
-    end = end == std::string::npos ? text.size() : end + 1;
-    const std::string line = text.substr(begin, end - begin);
+  int location = -1;
+  (void)EditLines(text, [&](const std::string& line) {
+    constexpr std::string_view kLayout = "layout(location = ";
     const size_t layout = LayoutPrefix(line);
     for (const char* type : {"in vec4 ", "in float "}) {
       const std::string declaration = type + name + ";";
-      if (layout != 0 && line.compare(layout, declaration.size(), declaration) == 0 &&
-          line.rfind("layout(location = ", 0) == 0) {
-        return std::atoi(line.c_str() + 18);
+      if (line.rfind(kLayout, 0) == 0 &&
+          line.compare(layout, declaration.size(), declaration) == 0) {
+        location = std::atoi(line.c_str() + kLayout.size());
       }
     }
-    begin = end;
-  }
-  return -1;
+    return std::string();
+  });
+  return location;
 }
 
 // Vulkan, a vertex shader alone: the translation's outputs (`layout(location = N) out vec4
 // NAME;`) become globals, leaving the locations to the readback carriers.
 std::string DemoteOutputs(const std::string& text, const TargetDialect& d) {
   if (!d.locations) return text;
-  std::string out;
-  size_t begin = 0;
-  while (begin < text.size()) {
-    size_t end = text.find('\n', begin);
-    end = end == std::string::npos ? text.size() : end + 1;
-    const std::string line = text.substr(begin, end - begin);
+  return EditLines(text, [](const std::string& line) {
     const size_t layout = LayoutPrefix(line);
-    out += layout != 0 && line.compare(layout, 4, "out ") == 0 ? line.substr(layout + 4) : line;
-    begin = end;
-  }
-  return out;
+    return layout != 0 && line.compare(layout, 4, "out ") == 0 ? line.substr(layout + 4) : line;
+  });
 }
 
 // The fragment shader's inputs: the binding map's, and the fog coordinate that a fog option
@@ -459,8 +458,7 @@ bool PlanFragment(const RunPlan& plan, const CheckedTranslation& t, const Target
   return true;
 }
 
-}  // namespace
-
+// The model's value of the vertex attribute the binding map spells `spelling`.
 bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling, arbvp::Vec4* out) {
   auto index = [&](const char* prefix, int* n) {
     const size_t length = std::char_traits<char>::length(prefix);
@@ -492,6 +490,36 @@ bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling, a
   } else {
     return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool PointAttributes(const RunPlan& plan, const arbvp::BindingMap& map, const arbvp::InputVector& v,
+                     const arbvp::Vec4& clip,
+                     const std::function<void(int, const arbvp::Vec4&)>& put, std::string* error) {
+  if (plan.mode == RunMode::Fragment) {
+    const FragmentInputAttribs& a = kFragmentInputAttribs;
+    put(a.position, clip);
+    put(a.color, v.fragment.color);
+    put(a.secondary_color, v.fragment.secondary_color);
+    put(a.fogcoord, {v.fragment.fogcoord, 0.0f, 0.0f, 1.0f});
+    for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
+      put(a.texcoord0 + k, v.fragment.texcoord[static_cast<size_t>(k)]);
+    }
+    return true;
+  }
+  for (const arbvp::AttributeBinding& a : map.attributes) {
+    arbvp::Vec4 value{};
+    if (a.location < 0 || a.location >= arbvp::kMaxGenericAttribs ||
+        !AttributeValue(v.vertex, a.binding, &value)) {
+      *error = fmt::format("no input of the model feeds the attribute {} ({}, location {})", a.name,
+                           a.binding, a.location);
+      return false;
+    }
+    put(a.location, value);
+  }
+  if (plan.position_attrib >= 0) put(plan.position_attrib, clip);
   return true;
 }
 

@@ -5,6 +5,7 @@
 // (BindingMap::outputs, ::inputs), not from the emitter's naming conventions.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,15 @@ struct TargetDialect {
 };
 TargetDialect DialectOf(arbvp::EmitTarget target);
 
-// The model's value of the vertex attribute the binding map spells `spelling`
-// ("vertex.attrib[3]", "vertex.color.secondary"); false for a spelling of no model input.
-[[nodiscard]] bool AttributeValue(const arbvp::VertexInput& in, const std::string& spelling,
-                                  arbvp::Vec4* out);
+// The attributes of one point, vector `v` at clip position `clip`, each given to
+// put(location, value): for a fragment program alone the generated inputs
+// (kFragmentInputAttribs, the clip position among them); else every attribute of `map` at
+// its location (0..15), and the clip position at plan.position_attrib when it has one. False
+// (with `error`) for an attribute that no input of the model feeds.
+[[nodiscard]] bool PointAttributes(const RunPlan& plan, const arbvp::BindingMap& map,
+                                   const arbvp::InputVector& v, const arbvp::Vec4& clip,
+                                   const std::function<void(int, const arbvp::Vec4&)>& put,
+                                   std::string* error);
 
 // Plans the passes for `plan` (from PlanRun on the same programs) and `translation` (of
 // dialect.target). False (with `error`) when the translation or its binding map does not

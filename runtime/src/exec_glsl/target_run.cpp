@@ -131,28 +131,8 @@ class MesaTargetEngine final : public TargetEngine {
       const arbvp::InputVector& v = inputs.vectors[i];
       const arbvp::Vec4 clip =
           exec::PixelClipPosition(i, width, height, v.fragment.depth, inputs.state);
-      if (plan.mode == exec::RunMode::Fragment) {
-        const exec::FragmentInputAttribs& a = exec::kFragmentInputAttribs;
-        put(i, a.position, clip);
-        put(i, a.color, v.fragment.color);
-        put(i, a.secondary_color, v.fragment.secondary_color);
-        put(i, a.fogcoord, {v.fragment.fogcoord, 0.0f, 0.0f, 1.0f});
-        for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
-          put(i, a.texcoord0 + k, v.fragment.texcoord[static_cast<size_t>(k)]);
-        }
-        continue;
-      }
-      for (const arbvp::AttributeBinding& a : map.attributes) {
-        arbvp::Vec4 value{};
-        if (a.location < 0 || a.location >= kLocations ||
-            !exec::AttributeValue(v.vertex, a.binding, &value)) {
-          *error = fmt::format("no input of the model feeds the attribute {} ({}, location {})",
-                               a.name, a.binding, a.location);
-          return {};
-        }
-        put(i, a.location, value);
-      }
-      if (plan.position_attrib >= 0) put(i, plan.position_attrib, clip);
+      auto put_point = [&](int location, const arbvp::Vec4& value) { put(i, location, value); };
+      if (!exec::PointAttributes(plan, map, v, clip, put_point, error)) return {};
     }
     return data;
   }

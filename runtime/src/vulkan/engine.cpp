@@ -150,33 +150,13 @@ class VulkanTargetEngine final : public TargetEngine {
                        const arbvp::ExecInputs& inputs, int width, int height, float* data,
                        std::string* error) {
     for (size_t i = 0; i < inputs.vectors.size(); ++i) {
-      auto put = [&](int location, const arbvp::Vec4& v) {
-        std::copy(v.begin(), v.end(), data + i * kVertexFloats + 4 * static_cast<size_t>(location));
+      auto put = [&](int location, const arbvp::Vec4& value) {
+        std::copy(value.begin(), value.end(),
+                  data + i * kVertexFloats + 4 * static_cast<size_t>(location));
       };
       const arbvp::InputVector& v = inputs.vectors[i];
       const arbvp::Vec4 clip = VulkanClipPosition(i, width, height, v.fragment.depth, inputs.state);
-      if (plan.mode == exec::RunMode::Fragment) {
-        const exec::FragmentInputAttribs& a = exec::kFragmentInputAttribs;
-        put(a.position, clip);
-        put(a.color, v.fragment.color);
-        put(a.secondary_color, v.fragment.secondary_color);
-        put(a.fogcoord, {v.fragment.fogcoord, 0.0f, 0.0f, 1.0f});
-        for (int k = 0; k < arbvp::kMaxTextureCoords; ++k) {
-          put(a.texcoord0 + k, v.fragment.texcoord[static_cast<size_t>(k)]);
-        }
-        continue;
-      }
-      for (const arbvp::AttributeBinding& a : map.attributes) {
-        arbvp::Vec4 value{};
-        if (a.location < 0 || a.location >= kPixelLocation ||
-            !exec::AttributeValue(v.vertex, a.binding, &value)) {
-          *error = fmt::format("no input of the model feeds the attribute {} ({}, location {})",
-                               a.name, a.binding, a.location);
-          return false;
-        }
-        put(a.location, value);
-      }
-      put(kPixelLocation, clip);
+      if (!exec::PointAttributes(plan, map, v, clip, put, error)) return false;
     }
     return true;
   }
@@ -231,25 +211,22 @@ class VulkanTargetEngine final : public TargetEngine {
     buffers.reserve(descriptors.blocks.size());
     images.reserve(descriptors.samplers.size());
     std::vector<VkWriteDescriptorSet> writes;
-    for (const auto& [binding, buffer] : descriptors.blocks) {
-      buffers.push_back({buffer->buffer, 0, buffer->size});
+    auto write = [&](int binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
       VkWriteDescriptorSet& w = writes.emplace_back();
       w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
       w.dstSet = set;
       w.dstBinding = static_cast<uint32_t>(binding);
       w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-      w.pBufferInfo = &buffers.back();
+      w.descriptorType = type;
+      return w;
+    };
+    for (const auto& [binding, buffer] : descriptors.blocks) {
+      buffers.push_back({buffer->buffer, 0, buffer->size});
+      write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffers.back();
     }
     for (const auto& [binding, image] : descriptors.samplers) {
       images.push_back({image->sampler, image->view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-      VkWriteDescriptorSet& w = writes.emplace_back();
-      w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-      w.dstSet = set;
-      w.dstBinding = static_cast<uint32_t>(binding);
-      w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-      w.pImageInfo = &images.back();
+      write(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).pImageInfo = &images.back();
     }
     vkUpdateDescriptorSets(device_->device(), static_cast<uint32_t>(writes.size()), writes.data(),
                            0, nullptr);

@@ -57,34 +57,35 @@ VkComponentMapping DepthSwizzle(arbvp::DepthMode mode) {
   return {r, r, r, VK_COMPONENT_SWIZZLE_ONE};
 }
 
-// The image's shape for a texture of dimension `dim`.
-struct Shape {
-  VkImageType type = VK_IMAGE_TYPE_2D;
-  VkImageViewType view = VK_IMAGE_VIEW_TYPE_2D;
-  VkExtent3D extent{1, 1, 1};
-  uint32_t layers = 1;
-};
+VkImageAspectFlags AspectOf(VkFormat format) {
+  return format == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+}
 
-bool ShapeOf(const arbvp::Texture& t, Shape* shape, std::string* error) {
+// The image of texture `t`: RGBA32F, or D32_SFLOAT when `depth`.
+bool ShapeOf(const arbvp::Texture& t, bool depth, ImageShape* shape, std::string* error) {
   const auto w = static_cast<uint32_t>(t.width);
   const auto h = static_cast<uint32_t>(t.height);
+  const VkFormat format = depth ? VK_FORMAT_D32_SFLOAT : kColorFormat;
   switch (t.dim) {
     case arbvp::TexDim::Tex1D:
-      *shape = {VK_IMAGE_TYPE_1D, VK_IMAGE_VIEW_TYPE_1D, {w, 1, 1}, 1};
+      *shape = {VK_IMAGE_TYPE_1D, VK_IMAGE_VIEW_TYPE_1D, format, {w, 1, 1}, 1};
       return true;
     case arbvp::TexDim::Tex2D:
-      *shape = {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_2D, {w, h, 1}, 1};
+    case arbvp::TexDim::Rect:  // a translation that emulates RECT reads a 2D sampler
+      *shape = {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_2D, format, {w, h, 1}, 1};
       return true;
     case arbvp::TexDim::Tex3D:
-      *shape = {VK_IMAGE_TYPE_3D, VK_IMAGE_VIEW_TYPE_3D, {w, h, static_cast<uint32_t>(t.depth)}, 1};
+      *shape = {VK_IMAGE_TYPE_3D,
+                VK_IMAGE_VIEW_TYPE_3D,
+                format,
+                {w, h, static_cast<uint32_t>(t.depth)},
+                1};
       return true;
     case arbvp::TexDim::Cube:
-      *shape = {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_CUBE, {w, h, 1}, 6};
+      *shape = {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_CUBE, format, {w, h, 1}, 6};
       return true;
-    case arbvp::TexDim::Rect:
-      break;
   }
-  *error = "vulkan: a RECT texture has no Vulkan image view type";
+  *error = "vulkan: a texture of no known dimension";
   return false;
 }
 
@@ -164,19 +165,21 @@ Buffer* Resources::CreateBuffer(VkDeviceSize size, VkBufferUsageFlags usage, std
   return b;
 }
 
-Image* Resources::CreateAttachment(int width, int height, std::string* error) {
+Image* Resources::CreateImage(const ImageShape& shape, VkImageUsageFlags usage,
+                              std::string* error) {
   const VkDevice d = device_.device();
   Image* i = images_.emplace_back(std::make_unique<Image>()).get();
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-  info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = kColorFormat;
-  info.extent = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1};
+  info.flags = shape.view == VK_IMAGE_VIEW_TYPE_CUBE ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+  info.imageType = shape.type;
+  info.format = shape.format;
+  info.extent = shape.extent;
   info.mipLevels = 1;
-  info.arrayLayers = 1;
+  info.arrayLayers = shape.layers;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   if (!Check(vkCreateImage(d, &info, nullptr, &i->image), "vkCreateImage", error)) {
     i->image = VK_NULL_HANDLE;
@@ -188,37 +191,52 @@ Image* Resources::CreateAttachment(int width, int height, std::string* error) {
       !Check(vkBindImageMemory(d, i->image, i->memory, 0), "vkBindImageMemory", error)) {
     return nullptr;
   }
-  VkImageViewCreateInfo view{};
-  view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-  view.image = i->image;
-  view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view.format = kColorFormat;
-  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  if (!Check(vkCreateImageView(d, &view, nullptr, &i->view), "vkCreateImageView", error)) {
-    i->view = VK_NULL_HANDLE;
-    return nullptr;
-  }
   return i;
 }
 
-bool Resources::Upload(const arbvp::Texture& t, bool depth, VkImage image, std::string* error) {
-  Shape shape;
-  if (!ShapeOf(t, &shape, error)) return false;
+bool Resources::CreateView(const ImageShape& shape, VkComponentMapping components, Image* i,
+                           std::string* error) {
+  VkImageViewCreateInfo view{};
+  view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+  view.image = i->image;
+  view.viewType = shape.view;
+  view.format = shape.format;
+  view.components = components;
+  view.subresourceRange = {AspectOf(shape.format), 0, 1, 0, shape.layers};
+  if (!Check(vkCreateImageView(device_.device(), &view, nullptr, &i->view), "vkCreateImageView",
+             error)) {
+    i->view = VK_NULL_HANDLE;
+    return false;
+  }
+  return true;
+}
+
+Image* Resources::CreateAttachment(int width, int height, std::string* error) {
+  const ImageShape shape{VK_IMAGE_TYPE_2D,
+                         VK_IMAGE_VIEW_TYPE_2D,
+                         kColorFormat,
+                         {static_cast<uint32_t>(width), static_cast<uint32_t>(height), 1},
+                         1};
+  Image* i = CreateImage(
+      shape, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, error);
+  return i != nullptr && CreateView(shape, {}, i, error) ? i : nullptr;
+}
+
+bool Resources::Upload(const arbvp::Texture& t, const ImageShape& shape, VkImage image,
+                       std::string* error) {
   const size_t texels = static_cast<size_t>(shape.extent.width) * shape.extent.height *
                         shape.extent.depth * shape.layers;
-  const size_t channels = depth ? 1 : 4;
-  Buffer* staging =
-      CreateBuffer(texels * channels * sizeof(float), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, error);
+  const bool depth = shape.format == VK_FORMAT_D32_SFLOAT;
+  Buffer* staging = CreateBuffer(texels * (depth ? 1 : 4) * sizeof(float),
+                                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT, error);
   if (staging == nullptr) return false;
   auto* data = static_cast<float*>(staging->data);
-  for (size_t i = 0; i < texels; ++i) {
-    if (depth) {
-      data[i] = t.texels[i * 4];
-    } else {
-      std::memcpy(data + i * 4, t.texels.data() + i * 4, 4 * sizeof(float));
-    }
+  if (depth) {
+    for (size_t i = 0; i < texels; ++i) data[i] = t.texels[i * 4];  // the red channel
+  } else {
+    std::memcpy(data, t.texels.data(), texels * 4 * sizeof(float));
   }
-  const VkImageAspectFlags aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+  const VkImageAspectFlags aspect = AspectOf(shape.format);
   VkCommandBuffer commands = device_.BeginCommands(error);
   if (commands == VK_NULL_HANDLE) return false;
   Transition(commands, image, aspect, shape.layers, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -237,53 +255,21 @@ bool Resources::Upload(const arbvp::Texture& t, bool depth, VkImage image, std::
 }
 
 Image* Resources::CreateTexture(const arbvp::Texture& t, bool shadow, std::string* error) {
-  Shape shape;
-  if (!ShapeOf(t, &shape, error)) return nullptr;
+  const bool depth = shadow || t.depth_texture;
+  ImageShape shape;
+  if (!ShapeOf(t, depth, &shape, error)) return nullptr;
   if (t.width < 1 || t.height < 1 || t.depth < 1 ||
       t.texels.size() != static_cast<size_t>(shape.extent.width) * shape.extent.height *
                              shape.extent.depth * shape.layers * 4) {
-    *error = fmt::format("texture of {} floats does not fit its size {}x{}x{}", t.texels.size(),
-                         t.width, t.height, t.depth);
+    *error = fmt::format("vulkan: a texture of {} floats does not fit its size {}x{}x{}",
+                         t.texels.size(), t.width, t.height, t.depth);
     return nullptr;
   }
-  const VkDevice d = device_.device();
-  const bool depth = shadow || t.depth_texture;
-  const VkFormat format = depth ? VK_FORMAT_D32_SFLOAT : kColorFormat;
-  Image* i = images_.emplace_back(std::make_unique<Image>()).get();
-  VkImageCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-  info.flags = t.dim == arbvp::TexDim::Cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
-  info.imageType = shape.type;
-  info.format = format;
-  info.extent = shape.extent;
-  info.mipLevels = 1;
-  info.arrayLayers = shape.layers;
-  info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
-  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  if (!Check(vkCreateImage(d, &info, nullptr, &i->image), "vkCreateImage", error)) {
-    i->image = VK_NULL_HANDLE;
-    return nullptr;
-  }
-  VkMemoryRequirements needs{};
-  vkGetImageMemoryRequirements(d, i->image, &needs);
-  if (!Allocate(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &i->memory, error) ||
-      !Check(vkBindImageMemory(d, i->image, i->memory, 0), "vkBindImageMemory", error) ||
-      !Upload(t, depth, i->image, error)) {
-    return nullptr;
-  }
-  VkImageViewCreateInfo view{};
-  view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-  view.image = i->image;
-  view.viewType = shape.view;
-  view.format = format;
-  if (depth && !shadow) view.components = DepthSwizzle(t.depth_mode);
-  view.subresourceRange = {static_cast<VkImageAspectFlags>(depth ? VK_IMAGE_ASPECT_DEPTH_BIT
-                                                                 : VK_IMAGE_ASPECT_COLOR_BIT),
-                           0, 1, 0, shape.layers};
-  if (!Check(vkCreateImageView(d, &view, nullptr, &i->view), "vkCreateImageView", error)) {
-    i->view = VK_NULL_HANDLE;
+  Image* i =
+      CreateImage(shape, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, error);
+  if (i == nullptr || !Upload(t, shape, i->image, error) ||
+      !CreateView(shape, depth && !shadow ? DepthSwizzle(t.depth_mode) : VkComponentMapping{}, i,
+                  error)) {
     return nullptr;
   }
   const VkFilter filter =
@@ -301,7 +287,8 @@ Image* Resources::CreateTexture(const arbvp::Texture& t, bool shadow, std::strin
   sampler.minLod = 0.0f;
   sampler.maxLod = 0.0f;
   sampler.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-  if (!Check(vkCreateSampler(d, &sampler, nullptr, &i->sampler), "vkCreateSampler", error)) {
+  if (!Check(vkCreateSampler(device_.device(), &sampler, nullptr, &i->sampler), "vkCreateSampler",
+             error)) {
     i->sampler = VK_NULL_HANDLE;
     return nullptr;
   }

@@ -33,6 +33,15 @@ struct Image {
 // The format of colour attachments and colour textures.
 inline constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
+// What an image is: its type, its view's type, format, size and layers (a cube's six faces).
+struct ImageShape {
+  VkImageType type = VK_IMAGE_TYPE_2D;
+  VkImageViewType view = VK_IMAGE_VIEW_TYPE_2D;
+  VkFormat format = kColorFormat;
+  VkExtent3D extent{1, 1, 1};
+  uint32_t layers = 1;
+};
+
 class Resources {
  public:
   explicit Resources(const Device& device) : device_(device) {}
@@ -44,7 +53,8 @@ class Resources {
   Buffer* CreateBuffer(VkDeviceSize size, VkBufferUsageFlags usage, std::string* error);
   // A width x height RGBA32F colour attachment that can be copied from.
   Image* CreateAttachment(int width, int height, std::string* error);
-  // `texture` uploaded (one level; RECT is not one of them), sampled as the model says: its
+  // `texture` uploaded (one level; a RECT texture as a 2D image, which a translation that
+  // emulates RECT samplers reads with normalised coordinates), sampled as the model says: its
   // filter and wrap, and for a `shadow` sampler a depth comparison by its compare function.
   // A depth texture is D32_SFLOAT (the red channel of each texel); read through a sampler
   // that does not compare, its view spreads the depth as its depth mode says.
@@ -60,7 +70,14 @@ class Resources {
  private:
   bool Allocate(VkMemoryRequirements needs, VkMemoryPropertyFlags flags, VkDeviceMemory* memory,
                 std::string* error);
-  bool Upload(const arbvp::Texture& texture, bool depth, VkImage image, std::string* error);
+  // A single-level image of `shape` in device-local memory, without a view yet.
+  Image* CreateImage(const ImageShape& shape, VkImageUsageFlags usage, std::string* error);
+  [[nodiscard]] bool CreateView(const ImageShape& shape, VkComponentMapping components,
+                                Image* image, std::string* error);
+  // `texture`'s texels copied to `image` (a depth format takes the red channel), left in
+  // SHADER_READ_ONLY_OPTIMAL.
+  [[nodiscard]] bool Upload(const arbvp::Texture& texture, const ImageShape& shape, VkImage image,
+                            std::string* error);
 
   const Device& device_;
   std::vector<std::unique_ptr<Buffer>> buffers_;
