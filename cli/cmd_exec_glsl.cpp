@@ -103,6 +103,38 @@ Exit LoadShaders(const ExecGlslOptions& options, Loaded* out) {
   return ok && sink.error_count() == 0 ? Exit::Ok : Exit::Rejected;
 }
 
+// A --uniform of a declared uniform of a plain type (not a structure) with the wrong number of
+// values, judged from arbiter's reflection (Mesa's program judges the others, and cannot judge
+// a uniform it removed as inactive).
+std::optional<std::string> WrongUniformCount(const Loaded& loaded, const std::string& name,
+                                             size_t count) {
+  for (const glsl::Reflection* r : {&loaded.vertex_reflection, &loaded.fragment_reflection}) {
+    for (const auto* list : {&r->uniforms, &r->samplers}) {
+      for (const glsl::ReflectedVariable& v : *list) {
+        if (v.type.starts_with("struct") || v.components == 0) continue;
+        const size_t elements = static_cast<size_t>(std::max(v.array_size, 1));
+        const size_t per = static_cast<size_t>(v.components) / elements;
+        if (name == v.name && v.array_size == 0 && count != per) {
+          return fmt::format("--uniform {}: {} is a {} and takes {} value(s), not {}", name, name,
+                             v.type, per, count);
+        }
+        if (name == v.name && v.array_size > 0 &&
+            (count % per != 0 || count == 0 || count > per * elements)) {
+          return fmt::format(
+              "--uniform {}: {} is a {}[{}] and takes {} value(s) per element, for 1 to {} "
+              "elements, not {} value(s)",
+              name, name, v.type, elements, per, elements, count);
+        }
+        if (name.starts_with(v.name + "[") && v.array_size > 0 && count != per) {
+          return fmt::format("--uniform {}: {} is a {} and takes {} value(s), not {}", name, name,
+                             v.type, per, count);
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 bool BuildInputs(const ExecGlslOptions& options, const Loaded& loaded,
                  runtime::GlslExecInputs* inputs, std::vector<std::string>* warnings) {
   inputs->slots = runtime::GlslInputSlots(loaded.vertex ? &loaded.vertex_reflection : nullptr,
@@ -172,6 +204,10 @@ bool BuildInputs(const ExecGlslOptions& options, const Loaded& loaded,
     std::vector<float> values;
     if (!runtime::ParseGlslUniform(assignment, &name, &values, &error)) {
       fmt::print(stderr, "arbiter: error: {}\n", error);
+      return false;
+    }
+    if (std::optional<std::string> wrong = WrongUniformCount(loaded, name, values.size())) {
+      fmt::print(stderr, "arbiter: error: {}\n", *wrong);
       return false;
     }
     inputs->uniforms.emplace_back(name, values);
