@@ -17,8 +17,9 @@
       no disagreement and no error; programs the target refuses
       are reported by verify as not applicable and counted here, not failed.
   verify_corpus.py ARBITER CORPUS mutations-engine ENGINE [--sanitized]
-      the mutations of TARGET_MUTATIONS (ENGINE_MUTATIONS where an engine has its own), each
-      caught on ENGINE's path (--engines ref,ENGINE).
+      every mutation of MUTATIONS (but ENGINE_EXEMPT's) caught on ENGINE's path (--engines
+      ref,ENGINE); --sanitized: one per family (TARGET_MUTATIONS, or ENGINE_MUTATIONS where
+      an engine has its own) with 16 vectors.
   verify_corpus.py ARBITER CORPUS mutations-nv [--sanitized]
       the same for the mutations of the NV options' constructs, over the NV corpus
       (corpus/arb/valid-nv: the interpreter against Mesa running the translation).
@@ -76,6 +77,9 @@ TARGET_MUTATIONS = [
 ENGINE_MUTATIONS = {
     "vulkan-spirv": ["kil-only-x" if m == "kil-on-nan" else m for m in TARGET_MUTATIONS],
 }
+# The mutations an engine cannot see, left out of its full run: kil-on-nan on vulkan-spirv
+# (above; kil-only-x stands for the KIL family).
+ENGINE_EXEMPT = {"vulkan-spirv": ("kil-on-nan",)}
 
 
 def verify(arbiter, corpus, *args):
@@ -137,10 +141,14 @@ def main():
         return agree(arbiter, corpus, driver, "--engines", f"ref,{engine}", *sys.argv[6:],
                      engine=engine)
     if mode == "mutations-engine":
-        extra = ["--vectors", "16"] if "--sanitized" in sys.argv[5:] else []
+        # Every mutation on each engine; under the sanitizers (ten times slower) one per
+        # family, TARGET_MUTATIONS, with 16 vectors.
+        sanitized = "--sanitized" in sys.argv[5:]
+        extra = ["--vectors", "16"] if sanitized else []
         engine = sys.argv[4]
-        return mutations(arbiter, corpus, ENGINE_MUTATIONS.get(engine, TARGET_MUTATIONS), extra,
-                         engine)
+        names = ENGINE_MUTATIONS.get(engine, TARGET_MUTATIONS) if sanitized else [
+            m for m in MUTATIONS if m not in ENGINE_EXEMPT.get(engine, ())]
+        return mutations(arbiter, corpus, names, extra, engine)
     if mode in ("mutations", "mutations-nv"):
         extra = ["--vectors", "64"] if "--sanitized" in sys.argv[4:] else []
         return mutations(arbiter, corpus, MUTATIONS if mode == "mutations" else NV_MUTATIONS,
