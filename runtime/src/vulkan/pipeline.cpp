@@ -56,6 +56,7 @@ std::vector<VkDescriptorSetLayoutBinding> SetBindings(const arbvp::BindingMap& m
     l.stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   }
   std::vector<VkDescriptorSetLayoutBinding> out;
+  out.reserve(bindings.size());
   for (const auto& [binding, l] : bindings) out.push_back(l);
   return out;
 }
@@ -188,11 +189,11 @@ bool Pipelines::Build(const exec::GlslPass& pass, const arbvp::BindingMap& map, 
     stages[s].pName = "main";
   }
   const VkVertexInputBindingDescription vertex_binding{
-      0, static_cast<uint32_t>(kVertexLocations * 4 * sizeof(float)), VK_VERTEX_INPUT_RATE_VERTEX};
+      0, static_cast<uint32_t>(sizeof(float) * 4 * kVertexLocations), VK_VERTEX_INPUT_RATE_VERTEX};
   std::array<VkVertexInputAttributeDescription, kVertexLocations> attributes{};
   for (uint32_t l = 0; l < attributes.size(); ++l) {
     attributes[l] = {l, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
-                     static_cast<uint32_t>(l * 4 * sizeof(float))};
+                     static_cast<uint32_t>(sizeof(float) * 4 * l)};
   }
   VkPipelineVertexInputStateCreateInfo vertex_input{};
   vertex_input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;

@@ -45,16 +45,16 @@ VkCompareOp CompareOp(arbvp::CompareFunc func) {
 // GL_DEPTH_TEXTURE_MODE as a view's swizzle of the depth in R: LUMINANCE (d, d, d, 1),
 // INTENSITY (d, d, d, d), ALPHA (0, 0, 0, d).
 VkComponentMapping DepthSwizzle(arbvp::DepthMode mode) {
-  constexpr VkComponentSwizzle r = VK_COMPONENT_SWIZZLE_R;
+  constexpr VkComponentSwizzle kR = VK_COMPONENT_SWIZZLE_R;
   switch (mode) {
     case arbvp::DepthMode::Luminance:
-      return {r, r, r, VK_COMPONENT_SWIZZLE_ONE};
+      return {kR, kR, kR, VK_COMPONENT_SWIZZLE_ONE};
     case arbvp::DepthMode::Intensity:
-      return {r, r, r, r};
+      return {kR, kR, kR, kR};
     case arbvp::DepthMode::Alpha:
-      return {VK_COMPONENT_SWIZZLE_ZERO, VK_COMPONENT_SWIZZLE_ZERO, VK_COMPONENT_SWIZZLE_ZERO, r};
+      return {VK_COMPONENT_SWIZZLE_ZERO, VK_COMPONENT_SWIZZLE_ZERO, VK_COMPONENT_SWIZZLE_ZERO, kR};
   }
-  return {r, r, r, VK_COMPONENT_SWIZZLE_ONE};
+  return {kR, kR, kR, VK_COMPONENT_SWIZZLE_ONE};
 }
 
 VkImageAspectFlags AspectOf(VkFormat format) {
