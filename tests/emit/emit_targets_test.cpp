@@ -156,7 +156,7 @@ TEST(EmitTargetsTest, FragmentPositionConventions) {
   // ES counts y from the bottom: the option's upper-left y is flipped.
   t = translate(EmitTarget::Es300, plain);
   EXPECT_EQ(t.glsl.find("arb_framebuffer_height"), std::string::npos);
-  t = translate(EmitTarget::Es100, both);
+  t = translate(EmitTarget::Es300, both);
   EXPECT_NE(t.glsl.find("vec4((gl_FragCoord.x - 0.5), ((arb_framebuffer_height.x - "
                         "gl_FragCoord.y) - 0.5), gl_FragCoord.zw)"),
             std::string::npos)
@@ -356,9 +356,13 @@ TEST(EmitTargetsTest, Refusals) {
   const std::string upper =
       "!!ARBfp1.0\nOPTION ARB_fragment_coord_origin_upper_left;\n"
       "MOV result.color, fragment.position;\nEND\n";
-  for (EmitTarget t : {EmitTarget::Es100, EmitTarget::Es300, EmitTarget::Vk450}) {
+  for (EmitTarget t : {EmitTarget::Es300, EmitTarget::Vk450}) {
     EXPECT_EQ(RefusalOf(t, upper), "") << EmitTargetName(t);
   }
+  // ES 1.00's gl_FragCoord is mediump: no exact fragment.position there at all.
+  EXPECT_EQ(RefusalOf(EmitTarget::Es100, position),
+            "2:19: fragment.position: GLSL ES 1.00 has a mediump gl_FragCoord (section 7.2), "
+            "not the window position to float precision");
   EXPECT_EQ(RefusalOf(EmitTarget::Glsl120, upper),
             "2:8: OPTION ARB_fragment_coord_origin_upper_left: GLSL 1.20 has no gl_FragCoord "
             "layout qualifiers");

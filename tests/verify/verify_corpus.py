@@ -48,22 +48,14 @@ NV_MUTATIONS = [
     "brk-ignored", "rep-count-plus-one", "rfl-no-double", "seq-sne-swapped",
 ]
 DRIVER = {"lit-no-zero-pow-zero": "llvmpipe"}
-# Open disagreements of a target engine, by engine and driver (docs/verify.md, "Target
-# engines"): listed so that the test stays red for anything else, and fails when one of them
-# starts agreeing (the list must shrink with the fix). The ES 1.00 translation reads a
-# relatively addressed PARAM array through one `if` per element (72 to 96 of them): on
-# softpipe every output of these programs reads 0, on llvmpipe they agree except
-# address-relative-offsets.vp (one vector: table[87] reads 0).
-KNOWN_DISAGREE = {
-    ("mesa-es100", "softpipe"): {
-        "address-relative-offsets.vp", "beyond-min-97-parameters.vp", "limit-96-parameters.vp",
-        "skinning-four-bones.vp",
-    },
-}
-# A representative subset for each target engine (every mutation on every engine would take
-# an hour on two cores): one per family of translator bug: operand order, matrix layout,
-# swizzle and negation, write masks and saturation, KIL, fog, projective lookups, the
-# approximated functions, a step function and the LIT clamp.
+# Open disagreements of a target engine, by engine and driver ("file.vp" names per
+# (engine, driver); docs/verify.md, "Target engines"): listed so that the test stays red for
+# anything else, and fails when one of them starts agreeing. None are open.
+KNOWN_DISAGREE = {}
+# A representative subset for each target engine under the sanitizers (mutations-engine
+# --sanitized): one per family of translator bug: operand order, matrix layout, swizzle and
+# negation, write masks and saturation, KIL, fog, projective lookups, the approximated
+# functions, a step function and the LIT clamp.
 TARGET_MUTATIONS = [
     "rsq-no-abs", "lrp-operand-order", "matrix-rows-columns", "swz-sign-lost",
     "negation-dropped", "write-mask-ignored", "saturate-dropped", "kil-on-nan",

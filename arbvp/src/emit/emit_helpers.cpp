@@ -267,6 +267,28 @@ std::string RelativeReaderName(const Context& ctx, int var) {
 std::string RelativeReaderText(const Context& ctx, int var) {
   std::string name = ctx.var_names[static_cast<size_t>(var)];
   int size = static_cast<int>(ctx.program.vars[static_cast<size_t>(var)].bindings.size());
+  // An array of consecutive program.env or program.local entries is a stretch of their
+  // uniform array, which an ES 1.00 vertex shader may index by any expression (Appendix A.5).
+  const std::vector<Binding>& bindings = ctx.program.vars[static_cast<size_t>(var)].bindings;
+  const BindingKind kind = bindings.front().kind;
+  bool stretch =
+      ctx.IsVertex() && (kind == BindingKind::ProgramEnv || kind == BindingKind::ProgramLocal);
+  for (size_t i = 0; stretch && i < bindings.size(); ++i) {
+    stretch = bindings[i].kind == kind &&
+              bindings[i].index == bindings.front().index + static_cast<int32_t>(i);
+  }
+  if (ctx.target.id == EmitTarget::Es100 && stretch) {
+    return fmt::format(
+        "// {0}[A0.x + k]: program.{3}[{4} + A0.x + k]; a read outside {0}[0..{2}] gives\n"
+        "// vec4(0.0) (undefined in ARB).\n"
+        "vec4 {1}(int arb_i) {{\n"
+        "  if (arb_i < 0 || arb_i > {2}) return vec4(0.0);\n"
+        "  return {5}[{4} + arb_i];\n"
+        "}}\n",
+        name, RelativeReaderName(ctx, var), size - 1,
+        kind == BindingKind::ProgramEnv ? "env" : "local", bindings.front().index,
+        EnvName(ctx, kind == BindingKind::ProgramLocal));
+  }
   if (ctx.target.id == EmitTarget::Es100) {
     // ES 1.00 indexes arrays other than uniforms by constant index expressions only
     // (Appendix A.5): one test per element.

@@ -204,6 +204,10 @@ bool UsesStateUniforms(const EmitOptions& options) {
 
 namespace {
 
+bool IsFragPosition(const Binding& b) {
+  return b.kind == BindingKind::FragmentAttrib && b.fragment_attrib == FragmentAttrib::Position;
+}
+
 bool IsExtraColor(const Binding& b) {
   return b.kind == BindingKind::Result && b.result == ResultReg::FragColor && b.index > 0;
 }
@@ -294,6 +298,15 @@ Untranslatable FindUntranslatable(const Program& program, const EmitOptions& opt
     }
     if (!row.draw_buffers && AnyBinding(program, inst.dst.var, IsExtraColor)) {
       return {Refusal(row, "result.color[n] with n > 0", "one colour output"), inst.dst.range};
+    }
+    for (int i = 0; !row.frag_coord_highp && i < inst.src_count; ++i) {
+      const SrcOperand& s = inst.src[static_cast<size_t>(i)];
+      if (AnyBinding(program, s.var, IsFragPosition)) {
+        return {Refusal(row, "fragment.position",
+                        "a mediump gl_FragCoord (section 7.2), not the window position to float "
+                        "precision"),
+                s.range};
+      }
     }
   }
   return {};

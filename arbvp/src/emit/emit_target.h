@@ -35,6 +35,7 @@ struct DialectRow {
   bool coord_conventions;
   bool frag_position;
   bool clip_distances;
+  bool frag_coord_highp;
 };
 
 const DialectRow& GetDialectRow(EmitTarget target);

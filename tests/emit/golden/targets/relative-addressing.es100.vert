@@ -12,17 +12,11 @@ uniform vec4 arb_vp_env[8];  // program.env[0..7]
 uniform mat4 arb_matrix_mvp0;  // state.matrix.mvp
 vec4 palette[8];  // PARAM palette, read with relative addressing
 
-// palette[A0.x + k]: a read outside palette[0..7] gives vec4(0.0) (undefined in ARB).
+// palette[A0.x + k]: program.env[0 + A0.x + k]; a read outside palette[0..7] gives
+// vec4(0.0) (undefined in ARB).
 vec4 arb_read_palette(int arb_i) {
-  if (arb_i == 0) return palette[0];
-  if (arb_i == 1) return palette[1];
-  if (arb_i == 2) return palette[2];
-  if (arb_i == 3) return palette[3];
-  if (arb_i == 4) return palette[4];
-  if (arb_i == 5) return palette[5];
-  if (arb_i == 6) return palette[6];
-  if (arb_i == 7) return palette[7];
-  return vec4(0.0);
+  if (arb_i < 0 || arb_i > 7) return vec4(0.0);
+  return arb_vp_env[0 + arb_i];
 }
 
 void main() {
