@@ -157,6 +157,8 @@ std::string NRM(Context& ctx, const Instruction& inst) {
                      Call(fmt::format("vec4({0} * inversesqrt(dot({0}, {0})), 1.0)", v), 4));
 }
 
+namespace {
+
 // The packing instructions (NV_fragment_program_option 3.11.5.23-26): 32 bits made of the
 // operand's components, x in the least significant, as the float they form, replicated. Only
 // dialects with floatBitsToUint get here (FindUntranslatable).
@@ -165,6 +167,8 @@ std::string Packed(Context& ctx, const Instruction& inst, const std::string& bit
   ctx.helpers.insert(Helper::Pack);
   return WholeVector(ctx, inst, Call(fmt::format("vec4(uintBitsToFloat({}))", bits), 4));
 }
+
+}  // namespace
 
 std::string PK2H(Context& ctx, const Instruction& inst) {
   auto s = [&](int c) { return Source(ctx, Src(inst, 0), {c}).text; };
@@ -178,6 +182,8 @@ std::string PK2US(Context& ctx, const Instruction& inst) {
   };
   return Packed(ctx, inst, fmt::format("{} | ({} << 16)", f(0), f(1)));
 }
+namespace {
+
 // PK4B: round(127 * clamp(v, -128/127, 1) + 128); PK4UB: round(255 * clamp(v, 0, 1)).
 std::string PackBytes(Context& ctx, const Instruction& inst, const char* range) {
   std::string bits;
@@ -187,6 +193,8 @@ std::string PackBytes(Context& ctx, const Instruction& inst, const char* range) 
   }
   return Packed(ctx, inst, bits);
 }
+}  // namespace
+
 std::string PK4B(Context& ctx, const Instruction& inst) {
   return PackBytes(ctx, inst, "-128.0 / 127.0, 1.0, 127.0, 128.0");
 }
@@ -243,6 +251,8 @@ std::string SSG(Context& ctx, const Instruction& inst) {
   });
 }
 
+namespace {
+
 // The unpacking instructions (3.11.5.37-40): the bits of the operand's x, in fields from the
 // least significant; two-field forms repeat them in z and w.
 std::string Unpacked(Context& ctx, const Instruction& inst, const std::string& pattern) {
@@ -251,31 +261,35 @@ std::string Unpacked(Context& ctx, const Instruction& inst, const std::string& p
   const std::string bits = fmt::format("floatBitsToUint({})", Source(ctx, Src(inst, 0), {0}).text);
   return WholeVector(ctx, inst, Call(fmt::format(fmt::runtime(pattern), bits), 4));
 }
+}  // namespace
+
 std::string UP2H(Context& ctx, const Instruction& inst) {
   return Unpacked(ctx, inst,
                   "vec4(arb_half_value({0} & 0xFFFFu), arb_half_value({0} >> 16),"
                   " arb_half_value({0} & 0xFFFFu), arb_half_value({0} >> 16))");
 }
+namespace {
+
+// Components 0..3 read field n % count of `width` bits: (field + offset) / divisor.
+std::string UnpackFields(Context& ctx, const Instruction& inst, int count, int width,
+                         const char* offset, const char* divisor) {
+  std::string fields;
+  for (int n = 0; n < 4; ++n) {
+    fields += fmt::format("{}arb_unpack_field({{0}}, {}u, {}u, {}, {})", n ? ", " : "", n % count,
+                          width, offset, divisor);
+  }
+  return Unpacked(ctx, inst, "vec4(" + fields + ")");
+}
+}  // namespace
+
 std::string UP2US(Context& ctx, const Instruction& inst) {
-  return Unpacked(ctx, inst,
-                  "vec4(arb_unpack_field({0}, 0u, 16u, 0.0, 65535.0),"
-                  " arb_unpack_field({0}, 1u, 16u, 0.0, 65535.0),"
-                  " arb_unpack_field({0}, 0u, 16u, 0.0, 65535.0),"
-                  " arb_unpack_field({0}, 1u, 16u, 0.0, 65535.0))");
+  return UnpackFields(ctx, inst, 2, 16, "0.0", "65535.0");
 }
 std::string UP4B(Context& ctx, const Instruction& inst) {
-  return Unpacked(ctx, inst,
-                  "vec4(arb_unpack_field({0}, 0u, 8u, -128.0, 127.0),"
-                  " arb_unpack_field({0}, 1u, 8u, -128.0, 127.0),"
-                  " arb_unpack_field({0}, 2u, 8u, -128.0, 127.0),"
-                  " arb_unpack_field({0}, 3u, 8u, -128.0, 127.0))");
+  return UnpackFields(ctx, inst, 4, 8, "-128.0", "127.0");
 }
 std::string UP4UB(Context& ctx, const Instruction& inst) {
-  return Unpacked(ctx, inst,
-                  "vec4(arb_unpack_field({0}, 0u, 8u, 0.0, 255.0),"
-                  " arb_unpack_field({0}, 1u, 8u, 0.0, 255.0),"
-                  " arb_unpack_field({0}, 2u, 8u, 0.0, 255.0),"
-                  " arb_unpack_field({0}, 3u, 8u, 0.0, 255.0))");
+  return UnpackFields(ctx, inst, 4, 8, "0.0", "255.0");
 }
 
 // X2D: a.xy + (b.x * c.x + b.y * c.y, b.x * c.z + b.y * c.w), written to (x, y, x, y) in
