@@ -111,6 +111,30 @@ TEST(GlStateUniforms, ProgramParameters) {
   EXPECT_EQ(Get(s, params, "program.env[0]").type, UniformType::Vector);
 }
 
+// The spellings of what the translations emulate and ARB does not bind: a shadow lookup's
+// GL_DEPTH_TEXTURE_MODE (each component 0, r or 1 as the selector reads 0, 1 or 2), the
+// framebuffer's height, and the clip plane enables.
+TEST(GlStateUniforms, EmulatedState) {
+  GlState s;
+  const ProgramParameters params;
+  EXPECT_EQ(First4(Get(s, params, "texture[3].depthmode")), (Vec4{1, 1, 1, 2}));  // LUMINANCE
+  s.depth_texture_mode[3] = kDepthModeIntensity;
+  EXPECT_EQ(First4(Get(s, params, "texture[3].depthmode")), (Vec4{1, 1, 1, 1}));
+  s.depth_texture_mode[3] = kDepthModeAlpha;
+  EXPECT_EQ(First4(Get(s, params, "texture[3].depthmode")), (Vec4{0, 0, 0, 1}));
+  s.depth_texture_mode[3] = kDepthModeRed;
+  EXPECT_EQ(First4(Get(s, params, "texture[3].depthmode")), (Vec4{1, 0, 0, 2}));
+  s.framebuffer_height = 250.0f;
+  EXPECT_EQ(First4(Get(s, params, "framebuffer.height")), (Vec4{250, 0, 0, 0}));
+  EXPECT_EQ(First4(Get(s, params, "clip[5].enabled")), (Vec4{0, 0, 0, 0}));
+  s.clip_enabled[5] = true;
+  EXPECT_EQ(First4(Get(s, params, "clip[5].enabled")), (Vec4{1, 0, 0, 0}));
+  for (const char* bad : {"texture[16].depthmode", "clip[6].enabled", "clip[0].enable"}) {
+    UniformData u;
+    EXPECT_FALSE(UniformValue(s, params, bad, &u)) << bad;
+  }
+}
+
 TEST(GlStateUniforms, RefusesWhatItCannotName) {
   const GlState s;
   const ProgramParameters params;

@@ -103,6 +103,9 @@ struct Context {
   std::map<std::string, RegisterMapping> outputs;  // by ARB spelling
   int texcoord_size = 0;                           // gl_TexCoord elements used (max index + 1)
   int texcoord_declared = 0;  // pair translation: redeclare gl_TexCoord with this size
+  // Pair translation to GLSL ES of a position-invariant vertex program: the fragment shader
+  // discards on the clipped side of the user clip planes (ClipDiscard).
+  bool clip_discard = false;
   bool needs_rect = false;
   // OPTION ARB_fog_*: result.color[n] goes to FogColorName(n), fogged at the end of main.
   bool fog_redirect = false;

@@ -102,6 +102,7 @@ std::string EmitShader(Context& ctx) {
   }
 
   std::string locals;
+  if (ctx.clip_discard) locals += ClipDiscard(ctx);
   std::string globals;
   std::string readers;
   for (size_t i = 0; i < p.vars.size(); ++i) {
@@ -305,6 +306,12 @@ PairTranslation EmitGlslPair(const Program& vertex, const Program& fragment,
   }
   emit::Context v(vertex, options, vertex_source);
   emit::Context f(fragment, options, fragment_source);
+  f.clip_discard = vertex.HasOption(OptionId::PositionInvariant) && f.uniforms &&
+                   f.target.clip_planes == "discard";
+  if (f.clip_discard) {  // the first pass did not see the fragment shader's clip varyings
+    fragment_inputs[emit::kClipVaryings[0]] = "vec4";
+    fragment_inputs[emit::kClipVaryings[1]] = "vec2";
+  }
   v.texcoord_declared = texcoords;
   f.texcoord_declared = texcoords;
   // State as uniforms: the vertex shader declares the fragment shader's inputs too (a used

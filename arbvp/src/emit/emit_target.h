@@ -34,7 +34,7 @@ struct DialectRow {
   bool loops;
   bool coord_conventions;
   bool frag_position;
-  bool clip_distances;
+  std::string_view clip_planes;  // "distance", "enabled", "discard" or ""
   bool frag_coord_highp;
 };
 
@@ -75,8 +75,13 @@ std::string FogField(Context& ctx, std::string_view field);
 std::string StateUniformName(std::string_view spelling);
 // The statements ending main(): the vertex colours clamped to [0, 1] as GL clamps them.
 std::string UniformsEpilogue(const Context& ctx);
-// gl_Position of OPTION ARB_position_invariant: state.matrix.mvp times vertex.position.
+// gl_Position of OPTION ARB_position_invariant: state.matrix.mvp times vertex.position, and
+// the user clip planes as the dialect's clip_planes says.
 std::string InvariantPosition(Context& ctx);
+// The varyings that carry the clip distances to a GLSL ES fragment shader (planes 0-3, 4-5),
+// and the discard that stands for the clipping there (Context::clip_discard).
+inline constexpr const char* kClipVaryings[] = {"arb_user_clip0", "arb_user_clip1"};
+std::string ClipDiscard(Context& ctx);
 // The declarations of a shader reading state from uniforms: attributes with locations,
 // varyings, uniforms (in a std140 block for Vulkan), samplers, fragment outputs.
 std::string UniformsDeclarations(Context& ctx);

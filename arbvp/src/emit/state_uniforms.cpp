@@ -211,21 +211,52 @@ std::string InvariantPosition(Context& ctx) {
   (void)ReadBinding(ctx, row);
   std::string out =
       fmt::format("gl_Position = arb_matrix_mvp0 * {};  // OPTION ARB_position_invariant\n", p);
-  if (!ctx.target.clip_distances) return out;
+  const std::string_view mode = ctx.target.clip_planes;
+  if (mode.empty()) return out;
   // User clip planes clip as without a program (ARB_vertex_program 2.11): by the eye-space
-  // position; GL_CLIP_PLANEn enables distance n. GLSL 1.10 guarantees six planes.
+  // position. GLSL 1.10 guarantees six planes. Where the dialect has no enable, the enable
+  // is a uniform (clip[n].enabled): a disabled plane's distance is 0 (Vulkan) or 1 (the
+  // discard of GLSL ES), which never clips.
   row.matrix = MatrixName::Modelview;
   (void)ReadBinding(ctx, row);
   out += fmt::format("vec4 arb_eye_position = arb_matrix_modelview0 * {};\n", p);
+  std::vector<std::string> distances;
   for (int n = 0; n < kGlslClipPlanes; ++n) {
     Binding plane;
     plane.kind = BindingKind::State;
     plane.state = StateItem::ClipPlane;
     plane.index = n;
-    out += fmt::format("gl_ClipDistance[{}] = dot({}, arb_eye_position);\n", n,
-                       ReadStateUniform(ctx, plane).text);
+    std::string d = fmt::format("dot({}, arb_eye_position)", ReadStateUniform(ctx, plane).text);
+    if (mode != "distance") {
+      const std::string enabled = fmt::format("clip[{}].enabled", n);
+      const std::string name = StateUniformName(enabled);
+      ctx.state[name] = StateUniform{name, "vec4", enabled};
+      d = fmt::format("({}.x != 0.0 ? {} : {})", name, d, mode == "enabled" ? "0.0" : "1.0");
+    }
+    distances.push_back(d);
   }
+  if (mode != "discard") {
+    for (int n = 0; n < kGlslClipPlanes; ++n) {
+      out += fmt::format("gl_ClipDistance[{}] = {};\n", n, distances[static_cast<size_t>(n)]);
+    }
+    return out;
+  }
+  ctx.varyings[kClipVaryings[0]] = "vec4";
+  ctx.varyings[kClipVaryings[1]] = "vec2";
+  out += fmt::format("{} = vec4({}, {}, {}, {});\n", kClipVaryings[0], distances[0], distances[1],
+                     distances[2], distances[3]);
+  out += fmt::format("{} = vec2({}, {});\n", kClipVaryings[1], distances[4], distances[5]);
   return out;
+}
+
+std::string ClipDiscard(Context& ctx) {
+  ctx.varyings[kClipVaryings[0]] = "vec4";
+  ctx.varyings[kClipVaryings[1]] = "vec2";
+  return fmt::format(
+      "// The vertex program's user clip planes (OPTION ARB_position_invariant): GLSL ES has\n"
+      "// no clip distances, so a fragment on the clipped side is discarded.\n"
+      "if (any(lessThan({}, vec4(0.0))) || any(lessThan({}, vec2(0.0)))) discard;\n",
+      kClipVaryings[0], kClipVaryings[1]);
 }
 
 int VaryingLocation(std::string_view name) {

@@ -42,12 +42,12 @@ void Session::Execute(const ShaderTestLine& command) {
         {"enable",
          [](Session* s, const Args& a) {
            if (a.size() != 1) s->Error("expected 'enable GL_CAP'");
-           s->gl_.Enable(s->Enum(a[0]));
+           if (!s->EnableIsUniform(s->Enum(a[0]))) s->gl_.Enable(s->Enum(a[0]));
          }},
         {"disable",
          [](Session* s, const Args& a) {
            if (a.size() != 1) s->Error("expected 'disable GL_CAP'");
-           s->gl_.Disable(s->Enum(a[0]));
+           if (!s->EnableIsUniform(s->Enum(a[0]))) s->gl_.Disable(s->Enum(a[0]));
          }},
         {"depthfunc",
          [](Session* s, const Args& a) {

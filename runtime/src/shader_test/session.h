@@ -89,6 +89,9 @@ class Session {
   // The texture target a test's 1D or rectangle texture on `unit` is made with: GL_TEXTURE_2D
   // where the translation emulates it with a 2D sampler (arbvp::UploadsAs2D), else `target`.
   GLenum TranslatedTexTarget(GLenum target, int unit) const;
+  // Whether the translation reads enable `cap` as a uniform (clip[n].enabled, for a dialect
+  // without clip distances or their enables): GL's own stays off, as on an ES context.
+  bool EnableIsUniform(GLenum cap) const;
   int AttributeLocation(const std::string& binding) const;  // -1: the program has none
   std::string StandInFragmentShader(const std::string& vertex) const;
   std::string StandInVertexShader(const std::string& fragment);  // adds to bindings_

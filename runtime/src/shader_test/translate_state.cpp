@@ -54,6 +54,15 @@ std::string FixedFunctionBinding(const std::string& column) {
   return "";
 }
 
+bool Session::EnableIsUniform(GLenum cap) const {
+  if (!StateUniforms()) return false;
+  const int i = static_cast<int>(cap) - GL_CLIP_PLANE0;
+  const std::string spelling = fmt::format("clip[{}].enabled", i);
+  return i >= 0 && i < glstate::kMaxClipPlanes &&
+         std::any_of(bindings_.state.begin(), bindings_.state.end(),
+                     [&](const arbvp::StateUniform& u) { return u.binding == spelling; });
+}
+
 int Session::AttributeLocation(const std::string& binding) const {
   const std::string alias = binding == "vertex.color" ? "vertex.color.primary" : binding;
   for (const arbvp::AttributeBinding& a : bindings_.attributes) {
@@ -81,10 +90,20 @@ std::string Session::StandInFragmentShader(const std::string& vertex) const {
   std::string text = version + "\n// GL's fixed-function fragment stage: the primary colour.\n";
   if (es) text += "precision highp float;\n";
   if (!colour.empty()) text += fmt::format("{} vec4 {};\n", modern ? "in" : "varying", colour);
+  // The user clip planes of a GLSL ES translation arrive as two varyings to discard by
+  // (arbvp's kClipVaryings: the translation declares them when it writes them).
+  std::string discard;
+  if (vertex.find(" vec4 arb_user_clip0;") != std::string::npos) {
+    const char* in = modern ? "in" : "varying";
+    text += fmt::format("{0} vec4 arb_user_clip0;\n{0} vec2 arb_user_clip1;\n", in);
+    discard =
+        "if (any(lessThan(arb_user_clip0, vec4(0.0))) || any(lessThan(arb_user_clip1, "
+        "vec2(0.0)))) discard; ";
+  }
   if (modern) text += "layout(location = 0) out vec4 arb_fragcolor;\n";
   const std::string value = colour.empty() ? "vec4(0.0, 0.0, 0.0, 1.0)" : colour;
-  text +=
-      fmt::format("void main() {{ {} = {}; }}\n", modern ? "arb_fragcolor" : "gl_FragColor", value);
+  text += fmt::format("void main() {{ {}{} = {}; }}\n", discard,
+                      modern ? "arb_fragcolor" : "gl_FragColor", value);
   return text;
 }
 
@@ -214,6 +233,13 @@ void Session::TrackState(const std::string& command, const std::vector<std::stri
     // GL 2.0 section 2.12: the plane is stored as p * inverse(modelview).
     if (i < glstate::kMaxClipPlanes) {
       state_.clip_plane[static_cast<size_t>(i)] = ToVec4(p * glm::inverse(state_.modelview));
+    }
+  } else if (command == "enable" || command == "disable") {
+    // GL_CLIP_PLANEn (GL_CLIP_DISTANCEn in core GL): read as clip[n].enabled.
+    const GLenum cap = Enum(a.at(0));
+    const int i = static_cast<int>(cap) - GL_CLIP_PLANE0;
+    if (i >= 0 && i < glstate::kMaxClipPlanes) {
+      state_.clip_enabled[static_cast<size_t>(i)] = command == "enable";
     }
   } else if (command == "depthrange") {
     state_.depth_near = std::clamp(Float(a, 0), 0.0f, 1.0f);

@@ -81,6 +81,9 @@ struct GlState {
   float fog_start = 0.0f;
   float fog_end = 1.0f;
   std::array<Vec4, kMaxClipPlanes> clip_plane{};  // eye space; (0,0,0,0) initially
+  // Whether GL_CLIP_PLANEn is enabled (off initially). Not an ARB binding: translations to
+  // dialects without an enable of their own read it as "clip[n].enabled" (uniforms.h).
+  std::array<bool, kMaxClipPlanes> clip_enabled{};
   float point_size = 1.0f;
   float point_size_min = 0.0f;
   float point_size_max = 1.0f;  // GL's initial value is implementation-dependent; fixed here

@@ -94,9 +94,10 @@ inline Vec4 DepthModeSelector(uint32_t mode) {
 //   a whole matrix ("state.matrix.modelview[0].inverse"): StateMatrix, a Matrix;
 //   "program.env[n]" / "program.local[n]": that entry of `params`, the parameters of the
 //   program the uniform belongs to (env of its target, local of the program), a Vector;
-//   two spellings that are not ARB bindings, for what the translations emulate:
+//   three spellings that are not ARB bindings, for what the translations emulate:
 //   "texture[n].depthmode", DepthModeSelector of unit n's GL_DEPTH_TEXTURE_MODE (shadow
-//   lookups), and "framebuffer.height", (height, 0, 0, 0) (fragment.position), Vectors.
+//   lookups), "framebuffer.height", (height, 0, 0, 0) (fragment.position), and
+//   "clip[n].enabled", (1 or 0, 0, 0, 0) (user clip planes), Vectors.
 // False, leaving `out` alone, when the spelling is not canonical (spelling.h) or names an
 // index past the model's arrays (gl_state.h: lights, clip planes, texture units, texture and
 // program matrices, kMaxProgramParams parameters).
@@ -119,6 +120,13 @@ inline Vec4 DepthModeSelector(uint32_t mode) {
   }
   if (spelling == "framebuffer.height") {
     *out = detail::VectorUniform({state.framebuffer_height, 0.0f, 0.0f, 0.0f});
+    return true;
+  }
+  StateRef plane;
+  if (detail::MatchSpelling({"clip[{i}].enabled"}, spelling, &plane)) {
+    if (plane.index < 0 || plane.index >= kMaxClipPlanes) return false;
+    const bool on = state.clip_enabled[static_cast<size_t>(plane.index)];
+    *out = detail::VectorUniform({on ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f});
     return true;
   }
   StateRef unit;
