@@ -561,4 +561,25 @@ bool PlanTargetPasses(const RunPlan& plan, const CheckedTranslation& translation
   return PlanFragment(plan, translation, dialect, max_attachments, passes, error);
 }
 
+bool TranslateForTarget(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                        arbvp::EmitTarget target, const compiler::SourceFile* vertex_source,
+                        const compiler::SourceFile* fragment_source,
+                        CheckedTranslation* translation, std::string* not_applicable,
+                        std::string* error) {
+  arbvp::EmitOptions options = emit;
+  options.target = target;
+  options.state = arbvp::StateSource::Uniforms;
+  *translation =
+      EmitTranslation(programs.vertex, programs.fragment, options, vertex_source, fragment_source);
+  if (translation->refused) {
+    *not_applicable = translation->error;
+    return false;
+  }
+  if (!translation->error.empty()) {
+    *error = translation->error;
+    return false;
+  }
+  return true;
+}
+
 }  // namespace arbiter::runtime::exec

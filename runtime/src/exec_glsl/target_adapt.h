@@ -11,6 +11,7 @@
 
 #include "arbiter/arbvp/emit.h"
 #include "arbiter/arbvp/exec.h"
+#include "arbiter/runtime/exec.h"
 #include "arbiter/runtime/translate.h"
 #include "exec/program_rewrite.h"
 #include "exec_glsl/glsl_adapt.h"
@@ -39,6 +40,16 @@ TargetDialect DialectOf(arbvp::EmitTarget target);
                                    const arbvp::InputVector& v, const arbvp::Vec4& clip,
                                    const std::function<void(int, const arbvp::Vec4&)>& put,
                                    std::string* error);
+
+// The translation of `programs` to `target` with state as uniforms (emit's mutation kept),
+// as a target engine runs it. False with the refusal (construct and target) in
+// `not_applicable`, or with `error`.
+[[nodiscard]] bool TranslateForTarget(const ArbPrograms& programs, const arbvp::EmitOptions& emit,
+                                      arbvp::EmitTarget target,
+                                      const compiler::SourceFile* vertex_source,
+                                      const compiler::SourceFile* fragment_source,
+                                      CheckedTranslation* translation, std::string* not_applicable,
+                                      std::string* error);
 
 // Plans the passes for `plan` (from PlanRun on the same programs) and `translation` (of
 // dialect.target). False (with `error`) when the translation or its binding map does not

@@ -78,17 +78,9 @@ class MesaTargetEngine final : public TargetEngine {
            const compiler::SourceFile* vertex_source,
            const compiler::SourceFile* fragment_source) override {
     results->clear();
-    arbvp::EmitOptions options = emit;
-    options.target = dialect_.target;
-    options.state = arbvp::StateSource::Uniforms;
-    const CheckedTranslation translation = EmitTranslation(programs.vertex, programs.fragment,
-                                                           options, vertex_source, fragment_source);
-    if (translation.refused) {
-      *not_applicable = translation.error;
-      return false;
-    }
-    if (!translation.error.empty()) {
-      *error = translation.error;
+    CheckedTranslation translation;
+    if (!exec::TranslateForTarget(programs, emit, dialect_.target, vertex_source, fragment_source,
+                                  &translation, not_applicable, error)) {
       return false;
     }
     exec::RunPlan plan;
