@@ -22,30 +22,6 @@ namespace {
 
 constexpr const char* kPixelUniform = "arbiter_pixel";
 
-// The fragment shader's outputs: colour attachments by index, and whether it writes depth.
-struct FragmentOutputs {
-  std::vector<int> data;  // gl_FragData indices written
-  bool color = false;     // gl_FragColor
-  bool depth = false;     // gl_FragDepth
-};
-
-FragmentOutputs OutputsOf(const glsl::Reflection& fragment) {
-  FragmentOutputs out;
-  for (const glsl::BuiltinUse& use : fragment.builtins_written) {
-    if (use.name.starts_with("gl_FragColor")) out.color = true;
-    if (use.name.starts_with("gl_FragDepth")) out.depth = true;
-    if (!use.name.starts_with("gl_FragData")) continue;
-    if (use.name.starts_with("gl_FragData[")) {
-      out.data.push_back(std::stoi(use.name.substr(12)));
-    } else {  // indexed by a variable: every draw buffer
-      for (int i = 0; i < std::max(use.components / 4, 1); ++i) out.data.push_back(i);
-    }
-  }
-  std::sort(out.data.begin(), out.data.end());
-  out.data.erase(std::unique(out.data.begin(), out.data.end()), out.data.end());
-  return out;
-}
-
 // One uniform of the generated vertex shader fed from an input slot.
 struct Feed {
   std::string uniform;  // arbiter_in_3
@@ -107,6 +83,23 @@ std::vector<float> Value(const std::map<std::string, std::vector<float>>& v,
 }
 
 }  // namespace
+
+FragmentOutputs OutputsOf(const glsl::Reflection& fragment) {
+  FragmentOutputs out;
+  for (const glsl::BuiltinUse& use : fragment.builtins_written) {
+    if (use.name.starts_with("gl_FragColor")) out.color = true;
+    if (use.name.starts_with("gl_FragDepth")) out.depth = true;
+    if (!use.name.starts_with("gl_FragData")) continue;
+    if (use.name.starts_with("gl_FragData[")) {
+      out.data.push_back(std::stoi(use.name.substr(12)));
+    } else {  // indexed by a variable: every draw buffer
+      for (int i = 0; i < std::max(use.components / 4, 1); ++i) out.data.push_back(i);
+    }
+  }
+  std::sort(out.data.begin(), out.data.end());
+  out.data.erase(std::unique(out.data.begin(), out.data.end()), out.data.end());
+  return out;
+}
 
 bool RunFragment(const RunContext& run, std::vector<GlslVectorResult>* results,
                  std::string* error) {

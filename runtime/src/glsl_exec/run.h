@@ -80,6 +80,14 @@ struct VertexOutput {
 };
 std::vector<VertexOutput> VertexOutputs(const glsl::Reflection& vertex);
 
+// The fragment shader's outputs: colour attachments by index, and whether it writes depth.
+struct FragmentOutputs {
+  std::vector<int> data;  // gl_FragData indices written
+  bool color = false;     // gl_FragColor
+  bool depth = false;     // gl_FragDepth
+};
+FragmentOutputs OutputsOf(const glsl::Reflection& fragment);
+
 // Sets a uniform of GLSL type `type` (a float type, an int, bool or sampler) at `location`
 // to `count` elements of `values`.
 void UploadUniform(const Gl& gl, GLint location, std::string_view type, GLsizei count,

@@ -316,8 +316,10 @@ VkFramebuffer Resources::CreateFramebuffer(VkRenderPass render_pass,
 }
 
 VkDescriptorSet Resources::AllocateSet(VkDescriptorSetLayout layout, uint32_t uniform_buffers,
-                                       uint32_t samplers, std::string* error) {
+                                       uint32_t samplers, std::string* error,
+                                       uint32_t storage_buffers) {
   std::vector<VkDescriptorPoolSize> sizes;
+  if (storage_buffers > 0) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage_buffers});
   if (uniform_buffers > 0) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform_buffers});
   if (samplers > 0) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers});
   // A pool needs one size at least, even for a set without bindings.

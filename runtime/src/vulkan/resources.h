@@ -62,10 +62,10 @@ class Resources {
   // A framebuffer of `views` for `render_pass`; VK_NULL_HANDLE (with `error`) on failure.
   VkFramebuffer CreateFramebuffer(VkRenderPass render_pass, const std::vector<VkImageView>& views,
                                   int width, int height, std::string* error);
-  // A descriptor set of `layout` from a pool of its own with room for `uniform_buffers` and
-  // `samplers`; VK_NULL_HANDLE (with `error`) on failure.
+  // A descriptor set of `layout` from a pool of its own with room for `uniform_buffers`,
+  // `samplers` and `storage_buffers`; VK_NULL_HANDLE (with `error`) on failure.
   VkDescriptorSet AllocateSet(VkDescriptorSetLayout layout, uint32_t uniform_buffers,
-                              uint32_t samplers, std::string* error);
+                              uint32_t samplers, std::string* error, uint32_t storage_buffers = 0);
 
  private:
   bool Allocate(VkMemoryRequirements needs, VkMemoryPropertyFlags flags, VkDeviceMemory* memory,

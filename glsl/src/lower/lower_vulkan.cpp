@@ -1,0 +1,327 @@
+// LowerForVulkan: GLSL 1.10/1.20 to Vulkan GLSL 4.50 over glslang's preprocessed text, one
+// token at a time (scan.h), with the tables of builtins.h. See lower_vulkan.h.
+#include "arbiter/glsl/lower_vulkan.h"
+
+#include <fmt/format.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "lower/builtins.h"
+#include "prepare.h"
+#include "scan.h"
+
+namespace arbiter::glsl {
+namespace {
+
+using lower::BuiltinRole;
+using lower::BuiltinVariable;
+
+std::string Refusal(std::string_view construct) {
+  return fmt::format("not applicable: {}", construct);
+}
+
+// glslang's preprocessed text of the shader, with the directives arbiter reads first (#version,
+// #extension) and the preamble Mesa's implicit extensions bring; empty with `refusal` or
+// `error` set when the shader is one the lowering does not take.
+bool Preprocess(Stage stage, std::string_view text, std::string* out, std::string* refusal) {
+  EnsureGlslang();
+  compiler::SourceFile file("<shader>", std::string(text));
+  compiler::DiagnosticSink scratch(0);
+  PreparedShader prepared = PrepareShader(stage, {&file}, CheckOptions{}, &scratch);
+  if (!prepared.checked || scratch.error_count() > 0) {
+    *refusal = Refusal("a shader arbiter's checker does not accept");
+    return false;
+  }
+  if (prepared.gpu4()) {
+    *refusal = Refusal(prepared.gpu_shader4 ? "GL_EXT_gpu_shader4" : "GL_EXT_texture_array");
+    return false;
+  }
+  if (prepared.include) {
+    *refusal = Refusal("#include (GL_ARB_shading_language_include)");
+    return false;
+  }
+  std::vector<const char*> strings;
+  std::vector<int> lengths;
+  for (const std::string& t : prepared.texts) {
+    strings.push_back(t.data());
+    lengths.push_back(static_cast<int>(t.size()));
+  }
+  glslang::TShader shader(stage == Stage::Vertex ? EShLangVertex : EShLangFragment);
+  shader.setStringsWithLengths(strings.data(), lengths.data(), static_cast<int>(strings.size()));
+  if (!prepared.preamble.empty()) shader.setPreamble(prepared.preamble.c_str());
+  glslang::TShader::ForbidIncluder includer;
+  if (!shader.preprocess(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault, out,
+                         includer)) {
+    *refusal = Refusal("a shader glslang's preprocessor rejects");
+    return false;
+  }
+  return true;
+}
+
+struct Lowering {
+  Stage stage;
+  std::string out;
+  std::string refusal;
+  std::set<std::string> state;    // built-in uniforms used
+  std::set<std::string> structs;  // built-in structure types needed
+  std::set<std::string> shadow;   // samplers of shadow lookups (user names)
+  bool shadow_helper = false;
+};
+
+bool Refuse(Lowering* l, std::string_view construct) {
+  if (l->refusal.empty()) l->refusal = Refusal(construct);
+  return false;
+}
+
+// A built-in name of the shader: its lowered spelling, recording what it needs.
+bool LowerBuiltin(Lowering* l, std::string_view name, std::string* spelled) {
+  if (lower::FindBuiltinStruct(name) != nullptr) {
+    l->structs.insert(std::string(name));
+    *spelled = LoweredIdentifier(name);
+    return true;
+  }
+  const BuiltinVariable* v = lower::FindBuiltinVariable(name);
+  const uint8_t mask = l->stage == Stage::Vertex ? lower::kVertex : lower::kFragment;
+  if (v == nullptr || (v->stages & mask) == 0) return Refuse(l, std::string(name));
+  if (v->role == BuiltinRole::Keep) {
+    *spelled = std::string(name);
+    return true;
+  }
+  if (v->role == BuiltinRole::State) {
+    l->state.insert(std::string(name));
+    if (!v->type_name.empty()) l->structs.insert(std::string(v->type_name));
+  }
+  *spelled = LoweredIdentifier(name);
+  return true;
+}
+
+// The index just past the ')' that closes the '(' at `open`; tokens.size() if none.
+size_t Closing(const std::vector<Token>& tokens, size_t open) {
+  int depth = 0;
+  for (size_t i = open; i < tokens.size(); ++i) {
+    if (tokens[i].text == "(") ++depth;
+    if (tokens[i].text == ")" && --depth == 0) return i;
+  }
+  return tokens.size();
+}
+
+// The end (index of ';') of the statement that starts at `i`.
+size_t StatementEnd(const std::vector<Token>& tokens, size_t i) {
+  while (i < tokens.size() && tokens[i].text != ";") ++i;
+  return i;
+}
+
+// The declarations the lowered text starts with: built-in structures, uniforms, globals,
+// constants and the shadow helper.
+std::string Declarations(const Lowering& l) {
+  std::string out = "#version 450\n";
+  for (const std::string& s : l.structs) {
+    out += fmt::format("struct {} {{ {} }};\n", LoweredIdentifier(s),
+                       lower::FindBuiltinStruct(s)->members);
+  }
+  for (const std::string& name : l.state) {
+    const BuiltinVariable* v = lower::FindBuiltinVariable(name);
+    out += fmt::format("uniform {} {}{};\n", v->type, LoweredIdentifier(name),
+                       v->array_size > 0 ? fmt::format("[{}]", v->array_size) : "");
+  }
+  return out;
+}
+
+std::string Globals(Stage stage) {
+  std::string out;
+  const uint8_t mask = stage == Stage::Vertex ? lower::kVertex : lower::kFragment;
+  for (std::string_view name : {"gl_Vertex",
+                                "gl_Normal",
+                                "gl_Color",
+                                "gl_SecondaryColor",
+                                "gl_MultiTexCoord0",
+                                "gl_MultiTexCoord1",
+                                "gl_MultiTexCoord2",
+                                "gl_MultiTexCoord3",
+                                "gl_MultiTexCoord4",
+                                "gl_MultiTexCoord5",
+                                "gl_MultiTexCoord6",
+                                "gl_MultiTexCoord7",
+                                "gl_FogCoord",
+                                "gl_Position",
+                                "gl_PointSize",
+                                "gl_ClipVertex",
+                                "gl_FrontColor",
+                                "gl_BackColor",
+                                "gl_FrontSecondaryColor",
+                                "gl_BackSecondaryColor",
+                                "gl_TexCoord",
+                                "gl_FogFragCoord",
+                                "gl_FragCoord",
+                                "gl_FragColor",
+                                "gl_FragData",
+                                "gl_FragDepth",
+                                "gl_MaxLights",
+                                "gl_MaxClipPlanes",
+                                "gl_MaxTextureUnits",
+                                "gl_MaxTextureCoords",
+                                "gl_MaxVertexAttribs",
+                                "gl_MaxDrawBuffers"}) {
+    const BuiltinVariable* v = lower::FindBuiltinVariable(name);
+    if ((v->stages & mask) == 0) continue;
+    if (v->role == BuiltinRole::Const) {
+      out += fmt::format("const int {} = {};\n", LoweredIdentifier(name), v->value);
+    } else {
+      out += fmt::format("{} {}{};\n", v->type, LoweredIdentifier(name),
+                         v->array_size > 0 ? fmt::format("[{}]", v->array_size) : "");
+    }
+  }
+  return out;
+}
+
+// GL_DEPTH_TEXTURE_MODE applied to a shadow lookup's result r: per component, selector 0
+// reads 0, 1 reads r, 2 reads 1 (glstate::DepthModeSelector).
+constexpr std::string_view kShadowHelper =
+    "float arb_depth_part(float r, float s) { return s < 0.5 ? 0.0 : (s < 1.5 ? r : 1.0); }\n"
+    "vec4 arb_shadow(float r, vec4 s) {\n"
+    "  return vec4(arb_depth_part(r, s.x), arb_depth_part(r, s.y), arb_depth_part(r, s.z),\n"
+    "              arb_depth_part(r, s.w));\n"
+    "}\n";
+
+// Rewrites the code (directives blanked) of `text`.
+bool Rewrite(std::string_view code, Lowering* l) {
+  const std::vector<Token> tokens = Tokenize(code);
+  std::map<size_t, std::string> after;  // text to add after a token (closing a rewritten call)
+  std::set<size_t> dropped;             // tokens left out
+  int depth = 0;
+  size_t copied = 0;  // `code` is copied up to here
+  std::string& out = l->out;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const Token& t = tokens[i];
+    auto next = [&](size_t k) { return i + k < tokens.size() ? tokens[i + k].text : ""; };
+    // The text between the tokens as written (blanks, newlines, multi-character operators
+    // split into tokens are rebuilt by copying).
+    out.append(code.substr(copied, t.offset - copied));
+    copied = t.offset + t.text.size();
+    if (dropped.count(i) > 0) continue;
+    if (t.text == "{") ++depth;
+    if (t.text == "}") --depth;
+    std::string spelled(t.text);
+    if (t.kind == Token::Identifier) {
+      const std::string_view w = t.text;
+      if (depth == 0 && w == "uniform") {
+        const size_t end = StatementEnd(tokens, i);
+        for (size_t k = i; k < end; ++k) {
+          if (tokens[k].text == "=") return Refuse(l, "a uniform initializer (GLSL 1.20 4.3.5)");
+        }
+      }
+      if (depth == 0 && (w == "varying" || w == "invariant" || w == "attribute")) {
+        const size_t end = StatementEnd(tokens, i);
+        bool builtin = false;
+        bool declares = false;
+        for (size_t k = i + 1; k < end; ++k) {
+          if (tokens[k].text.starts_with("gl_")) builtin = true;
+          if (tokens[k].kind == Token::Identifier && tokens[k].text != "varying" &&
+              tokens[k].text != "centroid" && !tokens[k].text.starts_with("gl_")) {
+            declares = true;
+          }
+        }
+        // A redeclaration of a built-in (gl_TexCoord's size, "invariant gl_Position;"): the
+        // lowering declares them itself.
+        if (builtin && (w == "varying" || !declares)) {
+          for (size_t k = i; k <= end && k < tokens.size(); ++k) dropped.insert(k);
+          continue;
+        }
+        if (w == "invariant") continue;  // invariance is what one point per vector gives
+      }
+      if (w == "attribute" || w == "varying") continue;  // plain globals the main feeds
+      if (w == "centroid" && next(1) == "varying") continue;
+      if (w == "main") {
+        spelled = "arb_main";
+      } else if (w == "ftransform" && next(1) == "(" && next(2) == ")") {
+        l->state.insert("gl_ModelViewProjectionMatrix");
+        spelled = "(arb_gl_ModelViewProjectionMatrix * arb_gl_Vertex)";
+        dropped.insert(i + 1);
+        dropped.insert(i + 2);
+      } else if (w.starts_with("noise") && w.size() == 6 && next(1) == "(") {
+        return Refuse(l, fmt::format("{} (Mesa's noise functions return 0)", w));
+      } else if (const lower::LookupFunction* f = lower::FindLookupFunction(w);
+                 f != nullptr && next(1) == "(") {
+        spelled = std::string(f->replacement);
+        if (f->shadow) {
+          // shadow2D(s, c) -> arb_shadow(texture(s, c), arb_depthmode_s)
+          const size_t close = Closing(tokens, i + 1);
+          if (close >= tokens.size() || i + 3 >= close || tokens[i + 2].kind != Token::Identifier ||
+              tokens[i + 3].text != ",") {
+            return Refuse(l, fmt::format("{} of a sampler that is not a uniform's name", w));
+          }
+          const std::string sampler(tokens[i + 2].text);
+          l->shadow.insert(sampler);
+          l->shadow_helper = true;
+          spelled = "arb_shadow(" + spelled;
+          after[close] += fmt::format(", arb_depthmode_{})", LoweredIdentifier(sampler));
+        }
+      } else if (w.starts_with("gl_")) {
+        if (!LowerBuiltin(l, w, &spelled)) return false;
+      } else if (w == "sampler2DRect" || w == "sampler2DRectShadow" ||
+                 w.starts_with("texture2DRect") || w.starts_with("shadow2DRect")) {
+        return Refuse(l, fmt::format("{} (rectangle textures)", w));
+      } else {
+        spelled = LoweredIdentifier(w);
+      }
+    }
+    out += spelled;
+    if (auto it = after.find(i); it != after.end()) out += it->second;
+  }
+  out.append(code.substr(copied));
+  return true;
+}
+
+}  // namespace
+
+std::string LoweredIdentifier(std::string_view name) {
+  if (name.starts_with("gl_")) return fmt::format("arb_{}", name);
+  if (name.starts_with("arb_") || lower::IsReservedIn450(name)) {
+    return fmt::format("arb_u_{}", name);
+  }
+  return std::string(name);
+}
+
+LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
+  LoweredShader result;
+  std::string preprocessed;
+  if (!Preprocess(stage, text, &preprocessed, &result.not_applicable)) return result;
+  // The directives glslang leaves (#version, #extension, #pragma, #line) are blanked: an
+  // extension the shader enables is one the lowering does not know.
+  // The shader's own #extension lines (those of Mesa's implicit extensions in glslang's
+  // preamble enable nothing that the tokens below do not refuse).
+  const std::string source = BlankComments(text);
+  for (const Directive& d : Directives(source)) {
+    if (d.name == "extension" && d.words.size() >= 3 && d.words[2].text != "disable" &&
+        d.words[0].text != "all") {
+      result.not_applicable = Refusal(fmt::format("#extension {}", d.words[0].text));
+      return result;
+    }
+  }
+  std::string code = BlankComments(preprocessed);
+  Lowering l{stage, {}, {}, {}, {}, {}, false};
+  for (const Directive& d : Directives(code)) {
+    std::fill(code.begin() + d.hash, code.begin() + d.end, ' ');
+  }
+  if (!Rewrite(code, &l)) {
+    result.not_applicable = l.refusal;
+    return result;
+  }
+  result.text = Declarations(l);
+  for (const std::string& s : l.shadow) {
+    result.shadow_samplers.push_back(s);
+    result.text += fmt::format("uniform vec4 arb_depthmode_{};\n", LoweredIdentifier(s));
+  }
+  result.text += Globals(stage);
+  if (l.shadow_helper) result.text += kShadowHelper;
+  result.text += l.out;
+  result.state.assign(l.state.begin(), l.state.end());
+  return result;
+}
+
+}  // namespace arbiter::glsl
