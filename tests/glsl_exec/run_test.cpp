@@ -4,128 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <memory>
 
-#include "arbiter/arbvp/exec_io.h"
-#include "arbiter/glsl/link.h"
-#include "arbiter/glsl/reflect.h"
-#include "arbiter/runtime/glsl_exec.h"
+#include "glsl_run.h"
 
 namespace arbiter::runtime {
 namespace {
 
-std::string Env(const char* name, const char* fallback) {
-  const char* value = std::getenv(name);
-  return value != nullptr && *value != '\0' ? value : fallback;
-}
-
-// One run: the shaders (checked and reflected by arbiter), the inputs, the result.
-class GlslRun {
- public:
-  GlslRun(const std::string& vertex, const std::string& fragment) {
-    compiler::DiagnosticSink sink(20);
-    if (!vertex.empty()) vs_ = std::make_unique<compiler::SourceFile>("t.vert", vertex);
-    if (!fragment.empty()) fs_ = std::make_unique<compiler::SourceFile>("t.frag", fragment);
-    if (vs_ && fs_) {
-      glsl::LinkResult linked = glsl::LinkProgram({vs_.get()}, {fs_.get()}, {}, &sink);
-      vr_ = std::move(linked.vertex);
-      fr_ = std::move(linked.fragment);
-    } else if (vs_) {
-      vr_ = glsl::ReflectShader(glsl::Stage::Vertex, {vs_.get()}, &sink);
-    } else {
-      fr_ = glsl::ReflectShader(glsl::Stage::Fragment, {fs_.get()}, &sink);
-    }
-    EXPECT_EQ(sink.error_count(), 0u) << vertex << fragment;
-    shaders_.vertex = vertex;
-    shaders_.fragment = fragment;
-    shaders_.vertex_reflection = vs_ ? &vr_ : nullptr;
-    shaders_.fragment_reflection = fs_ ? &fr_ : nullptr;
-    inputs_.slots = GlslInputSlots(shaders_.vertex_reflection, shaders_.fragment_reflection);
-    for (const glsl::Reflection* r : {&vr_, &fr_}) {
-      for (const glsl::ReflectedVariable& v : r->uniforms)
-        inputs_.declared_uniforms.push_back(v.name);
-    }
-    Vectors(1);
-  }
-
-  // `count` vectors, every slot at its fill.
-  void Vectors(size_t count) {
-    std::map<std::string, std::vector<float>> base;
-    for (const GlslInputSlot& slot : inputs_.slots) base[slot.name] = slot.fill;
-    inputs_.vectors.assign(count, base);
-  }
-  // --set on vector `v`.
-  void Set(const std::string& assignment, size_t v = 0) {
-    std::string name;
-    std::vector<float> values;
-    std::string error;
-    ASSERT_TRUE(ParseGlslSet(inputs_.slots, assignment, &name, &values, &error)) << error;
-    inputs_.vectors[v][name] = values;
-  }
-  void Uniform(const std::string& assignment) {
-    std::string name;
-    std::vector<float> values;
-    std::string error;
-    ASSERT_TRUE(ParseGlslUniform(assignment, &name, &values, &error)) << error;
-    inputs_.uniforms.emplace_back(name, values);
-  }
-  void State(const std::string& assignment) {
-    arbvp::ExecInputs arb;
-    arb.state = inputs_.state;
-    arb.vectors.emplace_back();
-    std::string error;
-    ASSERT_TRUE(arbvp::ApplyAssignment(assignment, &arb, &arb.vectors[0], &error)) << error;
-    inputs_.state = arb.state;
-  }
-
-  void Texture(const std::string& flag) {
-    arbvp::ExecInputs arb;
-    arb.textures = inputs_.textures;
-    std::string error;
-    ASSERT_TRUE(arbvp::ApplyTextureFlag(flag, &arb, &error)) << error;
-    inputs_.textures = arb.textures;
-  }
-
-  // The same run in a worker process (results carried back as JSON).
-  const GlslRunResult& RunInWorker() {
-    ExecOptions options;
-    EXPECT_TRUE(ParseBackend(Env("ARBITER_TEST_BACKEND", "osmesa"), &options.backend));
-    options.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
-    std::string error;
-    EXPECT_EQ(RunGlslInWorker(options, WorkerLimits{}, shaders_, inputs_, &result_, &error),
-              WorkerStatus::Ok)
-        << error;
-    return result_;
-  }
-
-  const GlslRunResult& Run() {
-    ExecOptions options;
-    EXPECT_TRUE(ParseBackend(Env("ARBITER_TEST_BACKEND", "osmesa"), &options.backend));
-    options.driver = Env("ARBITER_TEST_DRIVER", "softpipe");
-    std::string error;
-    EXPECT_TRUE(RunGlsl(options, shaders_, inputs_, &result_, &error)) << error;
-    return result_;
-  }
-
-  // The value of output `name` of vector `v` (empty when it is not there).
-  std::vector<float> Output(const std::string& name, size_t v = 0) const {
-    for (const GlslOutput& o : result_.vectors.at(v).outputs) {
-      if (o.name == name) return o.value;
-    }
-    return {};
-  }
-
- private:
-  std::unique_ptr<compiler::SourceFile> vs_;
-  std::unique_ptr<compiler::SourceFile> fs_;
-  glsl::Reflection vr_;
-  glsl::Reflection fr_;
-  GlslShaders shaders_;
-  GlslExecInputs inputs_;
-  GlslRunResult result_;
-};
+using testing::GlslRun;
 
 using V = std::vector<float>;
 
