@@ -45,7 +45,12 @@ struct More {
   std::vector<std::string> textures;
   std::function<void(std::map<int, arbvp::Texture>&)> make_textures;
   std::vector<std::string> state;
+  std::string vulkan_refusal;
 
+  More& Refused(std::string reason) {
+    vulkan_refusal = std::move(reason);
+    return *this;
+  }
   More& Tol(Tolerance t, float b) {
     tolerance = t;
     bound = b;
@@ -97,6 +102,7 @@ void Add(std::vector<GlslCase>* out, const Expr& e) {
     c.textures = e.more.textures;
     c.make_textures = e.more.make_textures;
     c.state = e.more.state;
+    c.vulkan_refusal = e.more.vulkan_refusal;
     GlslExpect x = Eq("", e.want);
     x.tolerance = e.more.tolerance;
     x.bound = e.more.bound;
@@ -402,6 +408,22 @@ void Textures(std::vector<GlslCase>* c) {
       "r = vec4(shadow2DLod(t, u, 0.0).x, texture3DLod(w, u, 0.0).xyz);",
       {"t=0", "w=1", "u=0.6,0.2,0.3"}, {1, 0.75f, 0.25f, 0.25f},
       More().Stages(kVertex).Textures({"0=2d:depth-gradient-compare:4x2", "1=3d:gradient:2x2x2"}));
+  // shadow1DProj: (1.2, -, 1, 2) / 2 = (.6, -, .5): depth .625 passes; r = 1.6 / 2 = .8 fails.
+  Add(c, "shadow1d_proj", "8.7 shadow1DProj", "uniform sampler1DShadow t;\nuniform vec4 u;\n",
+      "r = vec4(shadow1DProj(t, u).x, shadow1DProj(t, vec4(u.xy, 1.6, u.w)).x, 0.0, 0.0);",
+      {"t=0", "u=1.2,0,1,2"}, {1, 0, 0, 0}, More().Textures({"0=1d:depth-gradient-compare:4x1"}));
+  // The other Lod forms: 1.2 / 2 = .6 (texel 2 of 4); (1.4, .4, 1.6) / 2 = (.7, .2, .8);
+  // depth .625 at s = .6 against r = .5; (1.2, .4, 1) / 2 = (.6, .2, .5).
+  Add(c, "proj_lod_forms", "8.7 texture1DProjLod, texture3DProjLod, shadow1DLod, shadow2DProjLod",
+      "uniform sampler1DShadow t1;\nuniform sampler2DShadow t2;\nuniform sampler1D w1;\n"
+      "uniform sampler3D w3;\nuniform vec4 u;\n",
+      "r = vec4(texture1DProjLod(w1, u.xw, 0.0).x,\n"
+      "         texture3DProjLod(w3, vec4(1.4, u.y, 1.6, u.w), 0.0).x,\n"
+      "         shadow1DLod(t1, vec3(0.6, 0.0, 0.5), 0.0).x, shadow2DProjLod(t2, u, 0.0).x);",
+      {"t1=0", "t2=1", "w1=2", "w3=3", "u=1.2,0.4,1,2"}, {0.625f, 0.75f, 1, 1},
+      More().Stages(kVertex).Textures({"0=1d:depth-gradient-compare:4x1",
+                                       "1=2d:depth-gradient-compare:4x2", "2=1d:gradient:4x1",
+                                       "3=3d:gradient:2x2x2"}));
   // Linear filtering: at s = .375 of a 2-texel row, u = s * 2 - .5 = .25 between texels 0
   // (.25) and 1 (.75): .75 * .25 + .25 * .75 = .375. GL 2.0 3.8.8 leaves the weights'
   // precision to the implementation (Relative).
@@ -619,6 +641,18 @@ void StructsAndArrays(std::vector<GlslCase>* c) {
 
 // More expressions: indexing, globals, bvec constructors, while with continue.
 void MoreExpressions(std::vector<GlslCase>* c) {
+  // 8.9 noise: the spec fixes only properties, among them the range [-1, 1] (and the same
+  // value for the same input); no value is defined, so only the range is checked. SPIR-V has
+  // no noise: the Vulkan engine refuses it.
+  Add(c, "noise", "8.9 noise1, noise2, noise3, noise4", "uniform vec4 a;\n",
+      "r = vec4(float(abs(noise1(a.x)) <= 1.0),\n"
+      "         float(all(lessThanEqual(abs(noise2(a.xy)), vec2(1.0)))),\n"
+      "         float(all(lessThanEqual(abs(noise3(a.xyz)), vec3(1.0)))),\n"
+      "         float(all(lessThanEqual(abs(noise4(a)), vec4(1.0)))));",
+      {"a=0.3,1.7,-2.2,5.1"}, {1, 1, 1, 1}, More().Refused("noise1"));
+  // An explicit #version 110 shader.
+  Add(c, "version_110", "3.3 #version 110", "uniform vec4 a;\n", "r = a * 2.0 - 1.0;",
+      {"a=1,0.5,0,-1"}, {1, 0, -1, -3}, More().Version("110"));
   // A vector or matrix indexed by a non-constant int (5.5, 5.6).
   Add(c, "dynamic_index", "5.5, 5.6 indexing with a variable",
       "uniform vec4 a;\nuniform mat2 m;\nuniform int i;\n", "r = vec4(a[i], a[i + 1], m[i - 1]);",
