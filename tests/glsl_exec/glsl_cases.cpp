@@ -1065,6 +1065,18 @@ void FragmentShaders(std::vector<GlslCase>* out) {
 // Vertex + fragment pairs: the varyings flow from one stage to the other.
 void Pairs(std::vector<GlslCase>* out) {
   {
+    // A varying is the same over the whole point (one vertex), so its derivatives are 0 (8.8).
+    GlslCase c = Vs("pair_derivatives", "8.8 dFdx, dFdy, fwidth of a varying in a pair",
+                    "varying float k;\nvoid main() { gl_Position = gl_Vertex; k = gl_Vertex.x *"
+                    " 5.0; }\n");
+    c.fragment =
+        "varying float k;\n"
+        "void main() { gl_FragColor = vec4(dFdx(k), dFdy(k), fwidth(k), k); }\n";
+    c.sets = {{"gl_Vertex=1,0"}};
+    c.expects = {Eq("k", {5}), Eq("gl_FragColor", {0, 0, 0, 5})};
+    out->push_back(c);
+  }
+  {
     // Vertex colours are clamped to [0, 1] on the way (GL 2.0 2.14.6); user varyings not.
     GlslCase c = Vs("pair_colour_clamp", "GL 2.0 2.14.6 colour clamping, 4.3.6 varyings",
                     "varying float k;\nvoid main() {\n  gl_Position = gl_Vertex;\n"
