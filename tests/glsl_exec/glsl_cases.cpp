@@ -820,6 +820,44 @@ void BuiltinState(std::vector<GlslCase>* c) {
                    {"state.texgen[0].eye.s=1,2,3,4", "state.texgen[1].object.t=5,6,7,8"},
                    {11, 14, 17, 20}));
   // 7.4: the implementation's limits are at least the spec's minimums.
+  // projection diag(2, 4, 8), texture[0] diag(4, 4, 4), modelview a translation by (1, 2, 3):
+  // MVP rows (2,0,0,2) (0,4,0,8) (0,0,8,24) (0,0,0,1), whose inverse has column 3
+  // (-1, -2, -3, 1) and whose transpose has column 0 = row 0.
+  Add(c, StateExpr("matrix_inverse_transpose", "7.5 gl_*MatrixInverse, gl_*MatrixTranspose",
+                   "r = vec4(gl_ProjectionMatrixInverse[1].y, gl_TextureMatrixInverse[0][2].z,\n"
+                   "         gl_ModelViewProjectionMatrixTranspose[0].w,\n"
+                   "         gl_ModelViewProjectionMatrixInverse[3].x);",
+                   {"state.matrix.projection=2,0,0,0, 0,4,0,0, 0,0,8,0, 0,0,0,1",
+                    "state.matrix.texture[0]=4,0,0,0, 0,4,0,0, 0,0,4,0, 0,0,0,1",
+                    std::string("state.matrix.modelview=") + kTranslate123},
+                   {0.25f, 0.25f, 2, -1}));
+  {
+    // GL 2.0 2.11.3: f = 1 / sqrt(m31^2 + m32^2 + m33^2) of the inverse modelview's upper
+    // 3x3: diag(.5) gives 2. A square root (Relative).
+    Expr e = StateExpr("normal_scale", "7.5 gl_NormalScale, GL 2.0 2.11.3",
+                       "r = vec4(gl_NormalScale, 0.0, 0.0, 0.0);",
+                       {"state.matrix.modelview=2,0,0,0, 0,2,0,0, 0,0,2,0, 0,0,0,1"}, {2, 0, 0, 0});
+    e.more.tolerance = Tolerance::Relative;
+    e.more.bound = kGlPrecision;
+    Add(c, e);
+  }
+  // GL 2.0 table 6.x initial values: material ambient (.2,.2,.2,1), diffuse (.8,.8,.8,1),
+  // specular and emission (0,0,0,1); fog density 1, start 0, end 1 (scale 1); depth range
+  // [0, 1].
+  Add(c, StateExpr("material_defaults", "7.5 gl_FrontMaterial, GL 2.0 2.14.2 initial values",
+                   "r = vec4(gl_FrontMaterial.ambient.x, gl_FrontMaterial.diffuse.y,\n"
+                   "         gl_FrontMaterial.specular.z, gl_FrontMaterial.emission.w);",
+                   {}, {0.2f, 0.8f, 0, 1}));
+  Add(c, StateExpr("fog_depth_defaults", "7.5 gl_Fog, gl_DepthRange, GL 2.0 initial values",
+                   "r = vec4(gl_Fog.density, gl_Fog.start + gl_Fog.end, gl_Fog.scale,\n"
+                   "         gl_DepthRange.far - gl_DepthRange.near + gl_DepthRange.diff);",
+                   {}, {1, 1, 1, 2}));
+  // The back face's products: Dcm Dcli with the back material, (.5,.5,.5,1)(1,.5,.25,1).
+  Add(c,
+      StateExpr(
+          "back_light_product", "7.5 gl_BackLightProduct[n]", "r = gl_BackLightProduct[1].diffuse;",
+          {"state.material.back.diffuse=0.5,0.5,0.5,1", "state.light[1].diffuse=1,0.5,0.25,1"},
+          {0.5f, 0.25f, 0.125f, 1}));
   Add(c, StateExpr("builtin_constants", "7.4 built-in constants (minimums)",
                    "r = vec4(float(gl_MaxLights >= 8), float(gl_MaxClipPlanes >= 6),\n"
                    "         float(gl_MaxTextureCoords >= 2), float(gl_MaxDrawBuffers >= 1));",
@@ -844,6 +882,16 @@ GlslCase Fs(std::string name, std::string spec, std::string shader) {
 // 7.1 Vertex shader special variables and built-in attributes (7.3) and varyings (7.6),
 // read back as written (before any clamping).
 void VertexOutputs(std::vector<GlslCase>* out) {
+  {
+    // gl_TexCoord redeclared with a size may be indexed by a variable (7.6).
+    GlslCase c = Vs("texcoord_redeclared", "7.6 gl_TexCoord redeclared with a size",
+                    "varying vec4 gl_TexCoord[3];\nuniform int i;\n"
+                    "void main() {\n  gl_Position = gl_Vertex;\n"
+                    "  gl_TexCoord[i] = vec4(1.0, 2.0, 3.0, 4.0) * float(i);\n}\n");
+    c.uniforms = {"i=2"};
+    c.expects = {Eq("gl_TexCoord[2]", {2, 4, 6, 8})};
+    out->push_back(c);
+  }
   {
     // ftransform() = gl_ModelViewProjectionMatrix * gl_Vertex.
     GlslCase c = Vs("ftransform", "8.4 ftransform, 7.1 gl_Position",
@@ -962,6 +1010,15 @@ void VertexOutputs(std::vector<GlslCase>* out) {
 // 7.2 Fragment shader special variables and inputs (7.6); fragment shaders alone, fed with
 // what a vertex stage hands them. Vector i is drawn at pixel (i, 0).
 void FragmentShaders(std::vector<GlslCase>* out) {
+  {
+    // gl_FragData indexed by a loop variable.
+    GlslCase c = Fs("frag_data_loop", "7.2 gl_FragData[n] indexed by a variable",
+                    "void main() {\n  for (int i = 0; i < 2; ++i) gl_FragData[i] = vec4(float(i) +"
+                    " 0.5);\n}\n");
+    c.expects = {Eq("gl_FragData[0]", {0.5f, 0.5f, 0.5f, 0.5f}),
+                 Eq("gl_FragData[1]", {1.5f, 1.5f, 1.5f, 1.5f})};
+    out->push_back(c);
+  }
   {
     GlslCase c = Fs("frag_data", "7.2 gl_FragData[n]",
                     "varying float f;\nvoid main() {\n  gl_FragData[0] = gl_Color;\n"

@@ -21,6 +21,8 @@ namespace arbiter::runtime::glsl_exec {
 namespace {
 
 constexpr const char* kPixelUniform = "arbiter_pixel";
+// Mesa's GL_MAX_DRAW_BUFFERS (softpipe, llvmpipe; lavapipe's colour attachments too).
+constexpr int kMesaDrawBuffers = 8;
 
 // One uniform of the generated vertex shader fed from an input slot.
 struct Feed {
@@ -93,7 +95,10 @@ FragmentOutputs OutputsOf(const glsl::Reflection& fragment) {
     if (use.name.starts_with("gl_FragData[")) {
       out.data.push_back(std::stoi(use.name.substr(12)));
     } else {  // indexed by a variable: every draw buffer
-      for (int i = 0; i < std::max(use.components / 4, 1); ++i) out.data.push_back(i);
+      // The checker's gl_FragData has glslang's default size (32); Mesa has 8 draw buffers
+      // (GL_MAX_DRAW_BUFFERS, gl_MaxDrawBuffers), and a framebuffer of more fails the draw.
+      const int buffers = std::min(std::max(use.components / 4, 1), kMesaDrawBuffers);
+      for (int i = 0; i < buffers; ++i) out.data.push_back(i);
     }
   }
   std::sort(out.data.begin(), out.data.end());
