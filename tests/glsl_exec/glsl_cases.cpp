@@ -1185,6 +1185,100 @@ void Pairs(std::vector<GlslCase>* out) {
   }
 }
 
+// The plumbing of every input and output type: uniforms, attributes and varyings of the less
+// common shapes (GL 2.0 2.15.3: a uniform structure's members and an array's elements are
+// set one by one; matrices column by column).
+void Plumbing(std::vector<GlslCase>* out) {
+  {
+    // mat3x2: 3 columns of 2; mat4x3: 4 columns of 3 (1.20).
+    Expr e;
+    e.name = "uniform_nonsquare_matrices";
+    e.spec = "4.1.6 mat3x2, mat4x3 uniforms (1.20)";
+    e.decls = "uniform mat3x2 p;\nuniform mat4x3 q;\n";
+    e.body = "r = vec4(p[2], q[3].z, q[0].x);";
+    e.uniforms = {"p=1,2,3,4,5,6", "q=1,2,3,4,5,6,7,8,9,10,11,12"};
+    e.want = {5, 6, 12, 1};
+    e.more.version = "120";
+    Add(out, e);
+  }
+  {
+    Expr e;
+    e.name = "uniform_int_bool_arrays";
+    e.spec = "4.1.9 ivec and bool uniform arrays";
+    e.decls = "uniform ivec2 n[2];\nuniform bool f[3];\n";
+    e.body = "r = vec4(vec2(n[1]), float(f[1]), float(f[2]));";
+    e.uniforms = {"n=1,2,3,4", "f=1,0,1"};
+    e.want = {3, 4, 0, 1};
+    Add(out, e);
+  }
+  {
+    // A structure with an array member and a nested structure array.
+    Expr e;
+    e.name = "uniform_struct_with_arrays";
+    e.spec = "4.1.8 structure uniforms with array members";
+    e.decls = "struct M { float k; };\nstruct S { float w[2]; M m[2]; };\nuniform S s;\n";
+    e.body = "r = vec4(s.w[0], s.w[1], s.m[0].k, s.m[1].k);";
+    e.uniforms = {"s.w=1,2", "s.m[0].k=3", "s.m[1].k=4"};
+    e.want = {1, 2, 3, 4};
+    Add(out, e);
+  }
+  {
+    GlslCase c = Vs("matrix_attributes", "4.3.3 mat3 and mat4 attributes, vec2 attributes",
+                    "attribute mat3 m3;\nattribute mat4 m4;\nattribute vec2 uv;\n"
+                    "varying vec4 v;\nvarying vec4 w;\n"
+                    "void main() {\n  gl_Position = gl_Vertex;\n"
+                    "  v = vec4(m3[2], uv.y);\n  w = m4[3] + vec4(m4[0].x);\n}\n");
+    c.sets = {{"m3=1,2,3,4,5,6,7,8,9", "m4=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16", "uv=0.5,0.25"}};
+    c.expects = {Eq("v", {7, 8, 9, 0.25f}), Eq("w", {14, 15, 16, 17})};
+    out->push_back(c);
+  }
+  {
+    // gl_MultiTexCoord7 and the last texture coordinate set.
+    GlslCase c =
+        Vs("texcoord_7", "7.3 gl_MultiTexCoord7, 7.6 gl_TexCoord[7]",
+           "void main() { gl_Position = gl_Vertex; gl_TexCoord[7] = gl_MultiTexCoord7; }\n");
+    c.sets = {{"gl_MultiTexCoord7=1,2,3"}};
+    c.expects = {Eq("gl_TexCoord[7]", {1, 2, 3, 1})};
+    out->push_back(c);
+  }
+  {
+    // vec3 array and mat3x4 varyings (1.20), element by element.
+    GlslCase c = Vs("varying_vec3_array_mat3x4", "4.3.6 vec3[2] and mat3x4 varyings (1.20)",
+                    "#version 120\nuniform vec4 a;\nvarying vec3 n[2];\nvarying mat3x4 m;\n"
+                    "void main() {\n  gl_Position = gl_Vertex;\n  n[0] = a.xyz;\n"
+                    "  n[1] = a.wzy;\n  m = mat3x4(a, a * 2.0, a * 3.0);\n}\n");
+    c.uniforms = {"a=1,2,3,4"};
+    c.expects = {Eq("n[0]", {1, 2, 3}), Eq("n[1]", {4, 3, 2}),
+                 Eq("m", {1, 2, 3, 4, 2, 4, 6, 8, 3, 6, 9, 12})};
+    out->push_back(c);
+  }
+  {
+    // A fragment shader alone fed a vec3 array varying, by element.
+    GlslCase c =
+        Fs("fragment_vec3_array_input", "4.3.6 a vec3[2] varying read by a fragment shader",
+           "varying vec3 uv[2];\nvoid main() { gl_FragColor = vec4(uv[1], uv[0].x); }\n");
+    c.sets = {{"uv[0]=9,8,7", "uv[1]=1,2,3"}};
+    c.expects = {Eq("gl_FragColor", {1, 2, 3, 9})};
+    out->push_back(c);
+  }
+  {
+    // In a pair: the secondary colour is clamped as the primary is (GL 2.0 2.14.6); the fog
+    // coordinate and user arrays and matrices are not.
+    GlslCase c =
+        Vs("pair_secondary_fog_arrays", "GL 2.0 2.14.6; 4.3.6 varyings in a pair",
+           "varying float k[2];\nvarying mat2 m;\nvoid main() {\n"
+           "  gl_Position = gl_Vertex;\n  gl_FrontSecondaryColor = vec4(-1.0, 0.5, 3.0, 1.0);\n"
+           "  gl_FogFragCoord = 7.0 * gl_Vertex.w;\n  k[0] = -2.0;\n  k[1] = 9.0;\n"
+           "  m = mat2(1.0, 2.0, 3.0, 4.0) * gl_Vertex.w;\n}\n");
+    c.fragment =
+        "varying float k[2];\nvarying mat2 m;\nvoid main() {\n"
+        "  gl_FragData[0] = vec4(gl_SecondaryColor.xyz, gl_FogFragCoord);\n"
+        "  gl_FragData[1] = vec4(k[0], k[1], m[1]);\n}\n";
+    c.expects = {Eq("gl_FragData[0]", {0, 0.5f, 1, 7}), Eq("gl_FragData[1]", {-2, 9, 3, 4})};
+    out->push_back(c);
+  }
+}
+
 }  // namespace
 
 const std::vector<GlslCase>& AllGlslCases() {
@@ -1207,6 +1301,7 @@ const std::vector<GlslCase>& AllGlslCases() {
     VertexOutputs(&c);
     FragmentShaders(&c);
     Pairs(&c);
+    Plumbing(&c);
     return c;
   }();
   return cases;
