@@ -688,8 +688,9 @@ Expr StateExpr(std::string name, std::string spec, std::string body, std::vector
 const char* const kTranslate123 = "1,0,0,1, 0,1,0,2, 0,0,1,3, 0,0,0,1";
 const char* const kScale234 = "2,0,0,0, 0,3,0,0, 0,0,4,0, 0,0,0,1";
 
-// 7.5 Built-in uniform state, read in both stages. GL state is given as `arbiter exec --state`
-// takes it; lights, planes and positions in eye space (as GL holds them).
+// 7.5 Built-in uniform state, read in both stages. Left out: gl_LightSource[n].halfVector,
+// which 7.5 names derived state without giving its formula. GL state is given as `arbiter exec
+// --state` takes it; lights, planes and positions in eye space (as GL holds them).
 void BuiltinState(std::vector<GlslCase>* c) {
   // Column 3 of a translation is (1, 2, 3, 1); M (1,1,1,1) = (2, 3, 4, 1).
   Add(c, StateExpr("modelview_matrix", "7.5 gl_ModelViewMatrix",
@@ -750,8 +751,8 @@ void BuiltinState(std::vector<GlslCase>* c) {
                    "r = vec4(l.constantAttenuation, l.linearAttenuation, l.quadraticAttenuation,"
                    " 0.0);",
                    {"state.light[2].attenuation=1,0.5,0.25"}, {1, 0.5f, 0.25f, 0}));
-  // GL 2.0 table 6.x: light 0's diffuse is (1,1,1,1), the others' (0,0,0,1).
-  Add(c, StateExpr("light_defaults", "7.5 gl_LightSource, GL 2.0 2.14.1 initial values",
+  // GL 2.0 table 2.10: light 0's diffuse is (1,1,1,1), the others' (0,0,0,1).
+  Add(c, StateExpr("light_defaults", "7.5 gl_LightSource, GL 2.0 table 2.10",
                    "r = gl_LightSource[0].diffuse + 2.0 * gl_LightSource[1].diffuse;", {},
                    {1, 1, 1, 3}));
   Add(c,
@@ -841,14 +842,14 @@ void BuiltinState(std::vector<GlslCase>* c) {
     e.more.bound = kGlPrecision;
     Add(c, e);
   }
-  // GL 2.0 table 6.x initial values: material ambient (.2,.2,.2,1), diffuse (.8,.8,.8,1),
-  // specular and emission (0,0,0,1); fog density 1, start 0, end 1 (scale 1); depth range
-  // [0, 1].
-  Add(c, StateExpr("material_defaults", "7.5 gl_FrontMaterial, GL 2.0 2.14.2 initial values",
+  // GL 2.0's initial values: material ambient (.2,.2,.2,1), diffuse (.8,.8,.8,1), specular
+  // and emission (0,0,0,1) (table 2.10); fog density 1, start 0, end 1, so scale 1 (3.10);
+  // depth range [0, 1] (2.11.1).
+  Add(c, StateExpr("material_defaults", "7.5 gl_FrontMaterial, GL 2.0 table 2.10",
                    "r = vec4(gl_FrontMaterial.ambient.x, gl_FrontMaterial.diffuse.y,\n"
                    "         gl_FrontMaterial.specular.z, gl_FrontMaterial.emission.w);",
                    {}, {0.2f, 0.8f, 0, 1}));
-  Add(c, StateExpr("fog_depth_defaults", "7.5 gl_Fog, gl_DepthRange, GL 2.0 initial values",
+  Add(c, StateExpr("fog_depth_defaults", "7.5 gl_Fog, gl_DepthRange, GL 2.0 3.10, 2.11.1",
                    "r = vec4(gl_Fog.density, gl_Fog.start + gl_Fog.end, gl_Fog.scale,\n"
                    "         gl_DepthRange.far - gl_DepthRange.near + gl_DepthRange.diff);",
                    {}, {1, 1, 1, 2}));
@@ -1008,7 +1009,8 @@ void VertexOutputs(std::vector<GlslCase>* out) {
 }
 
 // 7.2 Fragment shader special variables and inputs (7.6); fragment shaders alone, fed with
-// what a vertex stage hands them. Vector i is drawn at pixel (i, 0).
+// what a vertex stage hands them. Vector i is drawn at pixel (i, 0). Left out: gl_PointCoord
+// (1.20), defined only for point sprites (GL 2.1 3.3), which the engines do not enable.
 void FragmentShaders(std::vector<GlslCase>* out) {
   {
     // gl_FragData indexed by a loop variable.
