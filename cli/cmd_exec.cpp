@@ -206,6 +206,12 @@ int RunExec(const ExecCommandOptions& given) {
   }
   ExecCommandOptions options = given;
   if (options.engine.empty()) options.engine = "ref";
+  if (options.engine == "vulkan") {
+    fmt::print(stderr,
+               "arbiter: error: --engine vulkan runs GLSL shaders; ARB programs run on ref, mesa "
+               "or all (arbiter verify runs their translations on Vulkan)\n");
+    return static_cast<int>(Exit::Usage);
+  }
   runtime::Backend backend = runtime::Backend::OSMesa;
   if (!runtime::ParseBackend(options.mesa.backend, &backend) ||
       !runtime::IsSupportedMesaDriver(options.mesa.driver)) {
@@ -324,9 +330,10 @@ std::function<int()> AddExecCommand(CLI::App* app) {
                    "one program or shader, or a vertex and a fragment program or shader")
       ->required();
   exec->add_option("--engine", options->engine,
-                   "ref (the reference interpreter, the default for ARB programs), mesa (the only "
-                   "engine for GLSL shaders), or all (both, differences marked)")
-      ->check(CLI::IsMember({"ref", "mesa", "all"}));
+                   "ref (the reference interpreter, the default for ARB programs), mesa (Mesa GL, "
+                   "the default for GLSL shaders), all (ref and mesa, differences marked), or "
+                   "vulkan (GLSL shaders lowered to Vulkan GLSL 4.50 and run on lavapipe)")
+      ->check(CLI::IsMember({"ref", "mesa", "all", "vulkan"}));
   AddRepeatedOption(
       exec, "--set", &options->set, "NAME=V1,..",
       "an input for every vector, one per --set (vertex.attrib[1]=1,2,3,4, "

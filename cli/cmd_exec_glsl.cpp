@@ -10,6 +10,7 @@
 #include "arbiter/glsl/link.h"
 #include "arbiter/glsl/reflect.h"
 #include "arbiter/runtime/glsl_exec.h"
+#include "arbiter/runtime/glsl_vulkan.h"
 #include "arbiter/runtime/mesa.h"
 #include "arbiter/runtime/worker.h"
 #include "exec_glsl.h"
@@ -242,12 +243,12 @@ void PrintText(const runtime::GlslRunResult& result) {
 }
 
 void PrintJson(const Loaded& loaded, const runtime::GlslRunResult* result,
-               const std::vector<std::string>& warnings) {
+               const std::vector<std::string>& warnings, const char* engine = "mesa") {
   nlohmann::ordered_json j;
   j["files"] = loaded.files;
   j["language"] = "glsl";
   nlohmann::ordered_json engines = nlohmann::ordered_json::object();
-  if (result != nullptr) engines["mesa"] = runtime::GlslResultsToJson(result->vectors);
+  if (result != nullptr) engines[engine] = runtime::GlslResultsToJson(result->vectors);
   j["results"] = engines;
   j["notes"] = result != nullptr ? result->notes : std::vector<std::string>{};
   std::vector<compiler::FileReport> with_diagnostics;  // as the ARB exec: files that have any
@@ -273,10 +274,13 @@ bool ExecFilesAreGlsl(const CommonOptions& options) {
 
 int RunExecGlsl(const ExecGlslOptions& options) {
   const CommonOptions& common = *options.common;
-  if (!options.engine.empty() && options.engine != "mesa") {
+  // GLSL runs on Mesa GL (mesa, the default) or lowered to Vulkan GLSL 4.50 on lavapipe
+  // (vulkan, runtime/glsl_vulkan.h).
+  const bool vulkan = options.engine == "vulkan";
+  if (!options.engine.empty() && options.engine != "mesa" && !vulkan) {
     return static_cast<int>(
-        Fail(fmt::format("--engine {}: GLSL shaders run on Mesa only (engine mesa): the "
-                         "reference interpreter runs ARB programs, not GLSL",
+        Fail(fmt::format("--engine {}: GLSL shaders run on Mesa GL (engine mesa) or on lavapipe "
+                         "(engine vulkan): the reference interpreter runs ARB programs, not GLSL",
                          options.engine),
              Exit::Usage));
   }
@@ -329,15 +333,26 @@ int RunExecGlsl(const ExecGlslOptions& options) {
   limits.memory_bytes = static_cast<uint64_t>(options.mesa->memory_mib) << 20;
   runtime::GlslRunResult result;
   std::string error;
-  if (runtime::RunGlslInWorker(exec, limits, shaders, inputs, &result, &error) !=
-      runtime::WorkerStatus::Ok) {
+  if (vulkan) {
+    std::string not_applicable;
+    const runtime::WorkerStatus status =
+        runtime::RunGlslVulkanInWorker(limits, shaders, inputs, &result, &not_applicable, &error);
+    if (!not_applicable.empty()) {
+      return static_cast<int>(Fail(
+          fmt::format("--engine vulkan: {} (--engine mesa runs it)", not_applicable), Exit::Usage));
+    }
+    if (status != runtime::WorkerStatus::Ok) {
+      return static_cast<int>(Fail(fmt::format("vulkan (lavapipe): {}", error), Exit::Environment));
+    }
+  } else if (runtime::RunGlslInWorker(exec, limits, shaders, inputs, &result, &error) !=
+             runtime::WorkerStatus::Ok) {
     return static_cast<int>(
         Fail(fmt::format("mesa ({}, {}): {}", options.mesa->backend, options.mesa->driver, error),
              Exit::Environment));
   }
   if (!result.usage_error.empty()) return static_cast<int>(Fail(result.usage_error, Exit::Usage));
   if (json) {
-    PrintJson(loaded, &result, warnings);
+    PrintJson(loaded, &result, warnings, vulkan ? "vulkan" : "mesa");
   } else {
     for (const std::string& note : result.notes) fmt::print(stderr, "arbiter: note: {}\n", note);
     PrintText(result);

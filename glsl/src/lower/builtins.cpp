@@ -445,7 +445,102 @@ constexpr std::string_view kReserved[] = {
     "writeonly",
 };
 
+// GLSL 1.10 and 1.20 chapter 8, sorted.
+constexpr std::string_view kFunctions[] = {
+    "abs",
+    "acos",
+    "all",
+    "any",
+    "asin",
+    "atan",
+    "ceil",
+    "clamp",
+    "cos",
+    "cross",
+    "dFdx",
+    "dFdy",
+    "degrees",
+    "distance",
+    "dot",
+    "equal",
+    "exp",
+    "exp2",
+    "faceforward",
+    "floor",
+    "fract",
+    "ftransform",
+    "fwidth",
+    "greaterThan",
+    "greaterThanEqual",
+    "inversesqrt",
+    "length",
+    "lessThan",
+    "lessThanEqual",
+    "log",
+    "log2",
+    "matrixCompMult",
+    "max",
+    "min",
+    "mix",
+    "mod",
+    "noise1",
+    "noise2",
+    "noise3",
+    "noise4",
+    "normalize",
+    "not",
+    "notEqual",
+    "outerProduct",
+    "pow",
+    "radians",
+    "reflect",
+    "refract",
+    "shadow1D",
+    "shadow1DLod",
+    "shadow1DProj",
+    "shadow1DProjLod",
+    "shadow2D",
+    "shadow2DLod",
+    "shadow2DProj",
+    "shadow2DProjLod",
+    "sign",
+    "sin",
+    "smoothstep",
+    "sqrt",
+    "step",
+    "tan",
+    "texture1D",
+    "texture1DLod",
+    "texture1DProj",
+    "texture1DProjLod",
+    "texture2D",
+    "texture2DLod",
+    "texture2DProj",
+    "texture2DProjLod",
+    "texture3D",
+    "texture3DLod",
+    "texture3DProj",
+    "texture3DProjLod",
+    "textureCube",
+    "textureCubeLod",
+    "transpose",
+};
+
+// Words GLSL 1.20 reserves that 1.10 leaves to the shader (1.20 section 3.6).
+constexpr std::string_view kNew120[] = {
+    "centroid", "invariant", "mat2x2", "mat2x3", "mat2x4", "mat3x2",
+    "mat3x3",   "mat3x4",    "mat4x2", "mat4x3", "mat4x4",
+};
+
 }  // namespace
+
+bool IsBuiltinFunction(std::string_view name) {
+  return std::binary_search(std::begin(kFunctions), std::end(kFunctions), name);
+}
+
+bool IsKeywordFrom120(std::string_view word) {
+  return std::find(std::begin(kNew120), std::end(kNew120), word) != std::end(kNew120);
+}
 
 const BuiltinVariable* FindBuiltinVariable(std::string_view name) {
   for (const BuiltinVariable& v : kVariables) {

@@ -49,4 +49,10 @@ const LookupFunction* FindLookupFunction(std::string_view name);
 // keywords nor built-in functions of GLSL 1.20: a shader's names that must be renamed.
 bool IsReservedIn450(std::string_view word);
 
+// A built-in function of GLSL 1.10 or 1.20 (chapter 8).
+bool IsBuiltinFunction(std::string_view name);
+
+// A keyword of GLSL 1.20 that 1.10 does not reserve ("centroid", "invariant", "mat2x3").
+bool IsKeywordFrom120(std::string_view word);
+
 }  // namespace arbiter::glsl::lower

@@ -78,7 +78,8 @@ bool CompileStage(const std::string& text, bool fragment, CompiledPair* out, std
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
     const glslang::TObjectReflection& u = program.getUniform(i);
     const glslang::TType* type = u.getType();
-    if (type == nullptr) continue;
+    // The engine's storage buffers are no uniforms.
+    if (type == nullptr || type->getQualifier().storage == glslang::EvqBuffer) continue;
     CompiledUniform c;
     c.name = u.name;
     c.type = TypeName(*type);

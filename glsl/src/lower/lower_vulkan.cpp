@@ -14,6 +14,7 @@
 #include "lower/builtins.h"
 #include "prepare.h"
 #include "scan.h"
+#include "source_text.h"
 
 namespace arbiter::glsl {
 namespace {
@@ -28,7 +29,8 @@ std::string Refusal(std::string_view construct) {
 // glslang's preprocessed text of the shader, with the directives arbiter reads first (#version,
 // #extension) and the preamble Mesa's implicit extensions bring; empty with `refusal` or
 // `error` set when the shader is one the lowering does not take.
-bool Preprocess(Stage stage, std::string_view text, std::string* out, std::string* refusal) {
+bool Preprocess(Stage stage, std::string_view text, std::string* out, int* version,
+                std::string* refusal) {
   EnsureGlslang();
   compiler::SourceFile file("<shader>", std::string(text));
   compiler::DiagnosticSink scratch(0);
@@ -41,6 +43,7 @@ bool Preprocess(Stage stage, std::string_view text, std::string* out, std::strin
     *refusal = Refusal(prepared.gpu_shader4 ? "GL_EXT_gpu_shader4" : "GL_EXT_texture_array");
     return false;
   }
+  *version = prepared.version;
   if (prepared.include) {
     *refusal = Refusal("#include (GL_ARB_shading_language_include)");
     return false;
@@ -65,6 +68,7 @@ bool Preprocess(Stage stage, std::string_view text, std::string* out, std::strin
 
 struct Lowering {
   Stage stage;
+  int version;
   std::string out;
   std::string refusal;
   std::set<std::string> state;    // built-in uniforms used
@@ -194,7 +198,8 @@ bool Rewrite(std::string_view code, Lowering* l) {
   std::map<size_t, std::string> after;  // text to add after a token (closing a rewritten call)
   std::set<size_t> dropped;             // tokens left out
   int depth = 0;
-  size_t copied = 0;  // `code` is copied up to here
+  int struct_depth = -1;  // the depth outside the structure being defined; -1: none
+  size_t copied = 0;      // `code` is copied up to here
   std::string& out = l->out;
   for (size_t i = 0; i < tokens.size(); ++i) {
     const Token& t = tokens[i];
@@ -207,8 +212,40 @@ bool Rewrite(std::string_view code, Lowering* l) {
     if (t.text == "{") ++depth;
     if (t.text == "}") --depth;
     std::string spelled(t.text);
+    if (t.text == "{" && i > 0 &&
+        (tokens[i - 1].text == "struct" || (i > 1 && tokens[i - 2].text == "struct"))) {
+      if (struct_depth >= 0) return Refuse(l, "a structure defined inside a structure");
+      struct_depth = depth - 1;
+    }
+    if (t.text == "}" && depth == struct_depth) struct_depth = -1;
     if (t.kind == Token::Identifier) {
       const std::string_view w = t.text;
+      const bool call = next(1) == "(";
+      // GLSL 1.10 leaves 1.20's new keywords to the shader's names.
+      if (l->version < 120 && lower::IsKeywordFrom120(w)) {
+        out += fmt::format("arb_u_{}", w);
+        continue;
+      }
+      // A variable named like a built-in function hides it in 1.10 and 1.20 (not in 4.50);
+      // a function that redefines one replaces every overload of the name (refused).
+      if (lower::IsBuiltinFunction(w) && !w.starts_with("gl_")) {
+        if (call && i > 0 && tokens[i - 1].kind == Token::Identifier &&
+            tokens[i - 1].text != "return") {
+          return Refuse(l, fmt::format("a redefinition of the built-in function {}", w));
+        }
+        if (!call) {
+          out += fmt::format("arb_u_{}", w);
+          continue;
+        }
+      }
+      if (depth == 0 && w == "uniform") {
+        const size_t end = StatementEnd(tokens, i);
+        for (size_t k = i; k + 1 < end; ++k) {
+          if (tokens[k].text == "[" && tokens[k + 1].text == "]") {
+            return Refuse(l, "a uniform array declared without a size");
+          }
+        }
+      }
       if (depth == 0 && w == "uniform") {
         const size_t end = StatementEnd(tokens, i);
         for (size_t k = i; k < end; ++k) {
@@ -243,7 +280,7 @@ bool Rewrite(std::string_view code, Lowering* l) {
         spelled = "(arb_gl_ModelViewProjectionMatrix * arb_gl_Vertex)";
         dropped.insert(i + 1);
         dropped.insert(i + 2);
-      } else if (w.starts_with("noise") && w.size() == 6 && next(1) == "(") {
+      } else if (w.starts_with("noise") && w.size() == 6 && call) {
         return Refuse(l, fmt::format("{} (Mesa's noise functions return 0)", w));
       } else if (const lower::LookupFunction* f = lower::FindLookupFunction(w);
                  f != nullptr && next(1) == "(") {
@@ -290,7 +327,8 @@ std::string LoweredIdentifier(std::string_view name) {
 LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
   LoweredShader result;
   std::string preprocessed;
-  if (!Preprocess(stage, text, &preprocessed, &result.not_applicable)) return result;
+  int version = 110;
+  if (!Preprocess(stage, text, &preprocessed, &version, &result.not_applicable)) return result;
   // The directives glslang leaves (#version, #extension, #pragma, #line) are blanked: an
   // extension the shader enables is one the lowering does not know.
   // The shader's own #extension lines (those of Mesa's implicit extensions in glslang's
@@ -303,8 +341,10 @@ LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
       return result;
     }
   }
-  std::string code = BlankComments(preprocessed);
-  Lowering l{stage, {}, {}, {}, {}, {}, false};
+  // The words glslang reserves that the shader's version leaves free were renamed for glslang
+  // 12 (source_text.h): their own spelling, renamed below where 4.50 reserves them.
+  std::string code = BlankComments(RestoreSpelling(preprocessed));
+  Lowering l{stage, version, {}, {}, {}, {}, {}, false};
   for (const Directive& d : Directives(code)) {
     std::fill(code.begin() + d.hash, code.begin() + d.end, ' ');
   }

@@ -173,9 +173,41 @@ bool SetUserUniforms(const std::vector<ActiveUniform>& active, const GlslExecInp
   return true;
 }
 
+// The sampler type arbiter's reflection gives the user's sampler `name` ("sampler2D").
+std::string SamplerType(const GlslShaders& shaders, const std::string& name) {
+  for (const glsl::Reflection* r : {shaders.vertex_reflection, shaders.fragment_reflection}) {
+    if (r == nullptr) continue;
+    for (const glsl::ReflectedVariable& v : r->samplers) {
+      if (v.name == name) return v.type;
+    }
+  }
+  return "sampler2D";
+}
+
+arbvp::TexDim DimOf(const std::string& sampler_type) {
+  if (sampler_type.starts_with("sampler1D")) return arbvp::TexDim::Tex1D;
+  if (sampler_type.starts_with("sampler3D")) return arbvp::TexDim::Tex3D;
+  if (sampler_type.starts_with("samplerCube")) return arbvp::TexDim::Cube;
+  return arbvp::TexDim::Tex2D;
+}
+
+// The texture a sampler of `type` on `unit` reads: the model's, or a 1x1 (0, 0, 0, 1) of the
+// sampler's dimension when the unit holds none of it (GL's incomplete texture).
+arbvp::Texture TextureFor(const std::string& type, int unit, const GlslExecInputs& inputs) {
+  const arbvp::TexDim dim = DimOf(type);
+  auto it = inputs.textures.find(unit);
+  if (it != inputs.textures.end() && it->second.dim == dim) return it->second;
+  arbvp::Texture t;
+  t.dim = dim;
+  t.depth = dim == arbvp::TexDim::Cube ? 6 : 1;
+  for (int i = 0; i < t.depth; ++i) t.texels.insert(t.texels.end(), {0.0f, 0.0f, 0.0f, 1.0f});
+  return t;
+}
+
 // The built-in state and the depth mode selectors of the shadow samplers.
-bool SetEngineUniforms(const glsl::CompiledPair& compiled, const arbvp::GlState& state,
-                       Uniforms* out, std::string* error) {
+bool SetEngineUniforms(const glsl::CompiledPair& compiled, const GlslShaders& shaders,
+                       const GlslExecInputs& inputs, Uniforms* out, std::string* error) {
+  const arbvp::GlState& state = inputs.state;
   for (const glsl::CompiledUniform& c : compiled.uniforms) {
     const TypeInfo type = TypeOf(c.type);
     if (c.name.starts_with("arb_gl_")) {
@@ -202,6 +234,13 @@ bool SetEngineUniforms(const glsl::CompiledPair& compiled, const arbvp::GlState&
       if (!glstate::UniformValue(state, {}, fmt::format("texture[{}].depthmode", unit),
                                  &selector)) {
         selector = glstate::detail::VectorUniform(glstate::DepthModeSelector(0));
+      }
+      // No texture of the sampler's dimension on the unit: GL's incomplete texture reads
+      // (0, 0, 0, 1).
+      auto texture = inputs.textures.find(unit);
+      if (texture == inputs.textures.end() ||
+          texture->second.dim != DimOf(SamplerType(shaders, glsl_vulkan::UserAccess(sampler)))) {
+        selector = glstate::detail::VectorUniform({0, 0, 0, 2});
       }
       Put(c, type, 0, 1, std::vector<float>(selector.data.begin(), selector.data.begin() + 4), out);
     }
@@ -246,33 +285,6 @@ void Notes(const GlslExecInputs& inputs, const std::vector<ActiveUniform>& activ
         "uniform {} is not active (glslang removed it: the outputs do not depend on it): ignored",
         name));
   }
-}
-
-// The sampler type arbiter's reflection gives the user's sampler `name` ("sampler2D").
-std::string SamplerType(const GlslShaders& shaders, const std::string& name) {
-  for (const glsl::Reflection* r : {shaders.vertex_reflection, shaders.fragment_reflection}) {
-    if (r == nullptr) continue;
-    for (const glsl::ReflectedVariable& v : r->samplers) {
-      if (v.name == name) return v.type;
-    }
-  }
-  return "sampler2D";
-}
-
-// The texture a sampler of `type` on `unit` reads: the model's, or a 1x1 (0, 0, 0, 1) of the
-// sampler's dimension when the unit holds none of it (GL's incomplete texture).
-arbvp::Texture TextureFor(const std::string& type, int unit, const GlslExecInputs& inputs) {
-  arbvp::TexDim dim = arbvp::TexDim::Tex2D;
-  if (type.starts_with("sampler1D")) dim = arbvp::TexDim::Tex1D;
-  if (type.starts_with("sampler3D")) dim = arbvp::TexDim::Tex3D;
-  if (type.starts_with("samplerCube")) dim = arbvp::TexDim::Cube;
-  auto it = inputs.textures.find(unit);
-  if (it != inputs.textures.end() && it->second.dim == dim) return it->second;
-  arbvp::Texture t;
-  t.dim = dim;
-  t.depth = dim == arbvp::TexDim::Cube ? 6 : 1;
-  for (int i = 0; i < t.depth; ++i) t.texels.insert(t.texels.end(), {0.0f, 0.0f, 0.0f, 1.0f});
-  return t;
 }
 
 // One draw of every vector on lavapipe.
@@ -590,7 +602,7 @@ bool Execute(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunRe
   }
   Notes(inputs, active, used, applied, result);
   if (!result->usage_error.empty()) return true;
-  if (!SetEngineUniforms(compiled, inputs.state, &uniforms, error)) return false;
+  if (!SetEngineUniforms(compiled, shaders, inputs, &uniforms, error)) return false;
 
   vulkan::Device device;
   if (!device.Create("llvmpipe", error)) return false;
