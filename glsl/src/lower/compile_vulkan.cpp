@@ -6,7 +6,11 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <algorithm>
 #include <memory>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "arbiter/glsl/lower_vulkan.h"
 #include "prepare.h"
@@ -29,6 +33,82 @@ std::string TypeName(const glslang::TType& t) {
                                                   : "float";
   }
   return fmt::format("{}vec{}", prefix, t.getVectorSize());
+}
+
+int RoundUp(int value, int to) { return (value + to - 1) / to * to; }
+
+int Std140Align(const glslang::TType& t);
+int Std140Size(const glslang::TType& t);
+
+// The stride of an array of `element`s: its size, at a vec4's alignment at least.
+int Std140Stride(const glslang::TType& element) {
+  return RoundUp(Std140Size(element), RoundUp(Std140Align(element), 16));
+}
+
+int Std140Align(const glslang::TType& t) {
+  if (t.isArray()) return RoundUp(Std140Align(glslang::TType(t, 0)), 16);
+  if (t.isStruct()) {
+    int align = 4;
+    for (const glslang::TTypeLoc& m : *t.getStruct()) align = std::max(align, Std140Align(*m.type));
+    return RoundUp(align, 16);
+  }
+  if (t.isMatrix()) return 16;  // columns as an array of vectors
+  const int n = std::max(t.getVectorSize(), 1);
+  return n == 1 ? 4 : n == 2 ? 8 : 16;
+}
+
+int Std140Size(const glslang::TType& t) {
+  if (t.isArray()) return Std140Stride(glslang::TType(t, 0)) * t.getOuterArraySize();
+  if (t.isStruct()) {
+    int offset = 0;
+    for (const glslang::TTypeLoc& m : *t.getStruct()) {
+      offset = RoundUp(offset, Std140Align(*m.type)) + Std140Size(*m.type);
+    }
+    return RoundUp(offset, Std140Align(t));
+  }
+  if (t.isMatrix()) return 16 * t.getMatrixCols();
+  return 4 * std::max(t.getVectorSize(), 1);
+}
+
+// The leaves of `t` at `offset` as GL names active uniforms: "w[0]" for an array of a basic
+// type (with its size and stride), each element of an array of structures apart.
+void Std140Members(const glslang::TType& t, const std::string& path, int offset, bool fragment,
+                   std::vector<CompiledUniform>* out) {
+  if (t.isStruct() && !t.isArray()) {
+    int at = 0;
+    for (const glslang::TTypeLoc& m : *t.getStruct()) {
+      at = RoundUp(at, Std140Align(*m.type));
+      const std::string name(m.type->getFieldName().c_str());
+      Std140Members(*m.type, path.empty() ? name : path + "." + name, offset + at, fragment, out);
+      at += Std140Size(*m.type);
+    }
+    return;
+  }
+  if (t.isArray()) {
+    const glslang::TType element(t, 0);
+    const int stride = Std140Stride(element);
+    if (element.isStruct()) {
+      for (int i = 0; i < t.getOuterArraySize(); ++i) {
+        Std140Members(element, fmt::format("{}[{}]", path, i), offset + i * stride, fragment, out);
+      }
+      return;
+    }
+    CompiledUniform c;
+    c.name = path + "[0]";
+    c.type = TypeName(element);
+    c.offset = offset;
+    c.array_size = t.getOuterArraySize();
+    c.array_stride = stride;
+    c.fragment = fragment;
+    out->push_back(std::move(c));
+    return;
+  }
+  CompiledUniform c;
+  c.name = path;
+  c.type = TypeName(t);
+  c.offset = offset;
+  c.fragment = fragment;
+  out->push_back(std::move(c));
 }
 
 // One stage compiled alone: its SPIR-V and its uniforms.
@@ -69,32 +149,37 @@ bool CompileStage(const std::string& text, bool fragment, CompiledPair* out, std
     *error = fmt::format("glslang cannot reflect the lowered {} shader", stage);
     return false;
   }
-  for (int b = 0; b < program.getNumUniformBlocks(); ++b) {
-    const glslang::TObjectReflection& block = program.getUniformBlock(b);
-    if (block.getBinding() == (fragment ? kFragmentUniformBinding : kVertexUniformBinding)) {
-      (fragment ? out->fragment_block_size : out->vertex_block_size) = block.size;
-    }
-  }
+  // glslang's reflection gives the default block's arrays of scalars packed offsets and
+  // strides; the SPIR-V has std140's. The block's members are laid out here by std140 (GLSL
+  // 4.50 7.6.2.2), and reflected where glslang reflects them as active.
+  std::set<std::string> active;
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
     const glslang::TObjectReflection& u = program.getUniform(i);
     const glslang::TType* type = u.getType();
     // The engine's storage buffers are no uniforms.
     if (type == nullptr || type->getQualifier().storage == glslang::EvqBuffer) continue;
+    if (type->getBasicType() != glslang::EbtSampler) {
+      active.insert(u.name);
+      continue;
+    }
     CompiledUniform c;
     c.name = u.name;
     c.type = TypeName(*type);
     c.fragment = fragment;
-    if (type->getBasicType() == glslang::EbtSampler) {
-      c.binding = u.getBinding();
-      c.array_size = std::max(u.size, 1);
-    } else {
-      c.offset = u.offset;
-      c.array_size = std::max(u.size, 1);
-      // std140 (glslang's reflection gives arrays of scalars their packed stride): every
-      // element of an array of scalars or vectors takes 16 bytes, of matrices 16 per column.
-      c.array_stride = 16 * (type->isMatrix() ? type->getMatrixCols() : 1);
-    }
+    c.binding = u.getBinding();
+    c.array_size = std::max(u.size, 1);
     out->uniforms.push_back(std::move(c));
+  }
+  const int binding = fragment ? kFragmentUniformBinding : kVertexUniformBinding;
+  for (int b = 0; b < program.getNumUniformBlocks(); ++b) {
+    const glslang::TObjectReflection& block = program.getUniformBlock(b);
+    if (block.getBinding() != binding || block.getType() == nullptr) continue;
+    (fragment ? out->fragment_block_size : out->vertex_block_size) = Std140Size(*block.getType());
+    std::vector<CompiledUniform> members;
+    Std140Members(*block.getType(), "", 0, fragment, &members);
+    for (CompiledUniform& m : members) {
+      if (active.count(m.name) > 0) out->uniforms.push_back(std::move(m));
+    }
   }
   std::vector<uint32_t>& spirv = fragment ? out->fragment : out->vertex;
   spv::SpvBuildLogger logger;

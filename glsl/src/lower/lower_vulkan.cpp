@@ -275,6 +275,11 @@ bool Rewrite(std::string_view code, Lowering* l) {
       if (w == "centroid" && next(1) == "varying") continue;
       if (w == "main") {
         spelled = "arb_main";
+      } else if (w == "dFdy" && call) {
+        // GL's window y grows upwards, Vulkan's framebuffer y downwards (the viewport of
+        // negative height flips the geometry, not the derivatives).
+        spelled = "(-dFdy";
+        after[Closing(tokens, i + 1)] += ")";
       } else if (w == "ftransform" && next(1) == "(" && next(2) == ")") {
         l->state.insert("gl_ModelViewProjectionMatrix");
         spelled = "(arb_gl_ModelViewProjectionMatrix * arb_gl_Vertex)";

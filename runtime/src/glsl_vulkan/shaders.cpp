@@ -155,9 +155,17 @@ Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_v
   const bool pair = !lowered_vertex.empty() && !lowered_fragment.empty();
   std::vector<Varying> varyings;
   if (pair) varyings = PairVaryings(*shaders.fragment_reflection);
-  std::string feed;  // the inputs of the run's first stage
+  // The inputs: read by the vertex stage; a fragment shader alone gets them through flat
+  // varyings from the generated vertex shader (reading them in the fragment stage would leave
+  // the helper invocations of a quad without them: derivatives need the same values there).
+  std::string feed;
   for (const IoPlan::Input& in : plan.inputs) {
     feed += fmt::format("  {} = {};\n", LowerAccess(in.name), ReadInput(in.type, in.first));
+  }
+  if (lowered_vertex.empty()) {
+    for (const IoPlan::Input& in : plan.inputs) {
+      varyings.push_back({in.type, 0, ReadInput(in.type, in.first), LowerAccess(in.name)});
+    }
   }
   if (!lowered_vertex.empty()) {
     std::string body = fmt::format("  int arb_b = gl_VertexIndex * {};\n", plan.input_stride);
@@ -179,11 +187,15 @@ Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_v
     }
     out.vertex = fmt::format("{}{}void main() {{\n{}}}\n", lowered_vertex, declarations, body);
   } else {
-    out.vertex = fmt::format(
-        "#version 450\n{}layout(location = 0) flat out int arb_index;\n"
-        "void main() {{\n  gl_Position = arb_in[gl_VertexIndex * {}];\n  gl_PointSize = 1.0;\n"
-        "  arb_index = gl_VertexIndex;\n}}\n",
-        kBuffers, plan.input_stride);
+    std::string body = fmt::format(
+        "  int arb_b = gl_VertexIndex * {};\n  gl_Position = arb_in[arb_b];\n"
+        "  gl_PointSize = 1.0;\n  arb_index = gl_VertexIndex;\n",
+        plan.input_stride);
+    for (size_t i = 0; i < varyings.size(); ++i) {
+      body += fmt::format("  arb_v{} = {};\n", i, varyings[i].from);
+    }
+    out.vertex = fmt::format("#version 450\n{}{}void main() {{\n{}}}\n", kBuffers,
+                             VaryingDeclarations(varyings, "out"), body);
   }
   if (lowered_fragment.empty()) return out;
   std::string declarations(kBuffers);
@@ -191,15 +203,9 @@ Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_v
       "  arb_gl_FragCoord = vec4(gl_FragCoord.x, {:.1f} - gl_FragCoord.y, gl_FragCoord.z, "
       "gl_FragCoord.w);\n",
       static_cast<double>(height));
-  if (pair) {
-    declarations += VaryingDeclarations(varyings, "in");
-    for (size_t i = 0; i < varyings.size(); ++i) {
-      body += fmt::format("  {} = arb_v{};\n", varyings[i].to, i);
-    }
-  } else {
-    declarations += "layout(location = 0) flat in int arb_index;\n";
-    body += fmt::format("  int arb_b = arb_index * {};\n", plan.input_stride);
-    body += feed;
+  declarations += VaryingDeclarations(varyings, "in");
+  for (size_t i = 0; i < varyings.size(); ++i) {
+    body += fmt::format("  {} = arb_v{};\n", varyings[i].to, i);
   }
   body += "  arb_main();\n";
   body += fmt::format("  int arb_o = {} + arb_index * {};\n", plan.vertex_stride * count,
