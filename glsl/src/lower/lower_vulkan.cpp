@@ -197,6 +197,19 @@ bool Rewrite(std::string_view code, Lowering* l) {
   const std::vector<Token> tokens = Tokenize(code);
   std::map<size_t, std::string> after;  // text to add after a token (closing a rewritten call)
   std::set<size_t> dropped;             // tokens left out
+  // The shader's functions (a name after a type at depth 0, before '('): 1.10 and 1.20 give
+  // functions a name space of their own (4.2), 4.50 does not, so each becomes arb_f_<name>
+  // where it is called or declared.
+  std::set<std::string_view> functions;
+  for (size_t i = 1, level = 0; i + 1 < tokens.size(); ++i) {
+    if (tokens[i].text == "{") ++level;
+    if (tokens[i].text == "}" && level > 0) --level;
+    if (level == 0 && tokens[i].kind == Token::Identifier && tokens[i + 1].text == "(" &&
+        tokens[i - 1].kind == Token::Identifier && tokens[i].text != "main" &&
+        !lower::IsBuiltinFunction(tokens[i].text)) {
+      functions.insert(tokens[i].text);
+    }
+  }
   int depth = 0;
   int struct_depth = -1;  // the depth outside the structure being defined; -1: none
   size_t copied = 0;      // `code` is copied up to here
@@ -275,6 +288,8 @@ bool Rewrite(std::string_view code, Lowering* l) {
       if (w == "centroid" && next(1) == "varying") continue;
       if (w == "main") {
         spelled = "arb_main";
+      } else if (call && functions.count(w) > 0) {
+        spelled = fmt::format("arb_f_{}", w);
       } else if (w == "dFdy" && call) {
         // GL's window y grows upwards, Vulkan's framebuffer y downwards (the viewport of
         // negative height flips the geometry, not the derivatives).
@@ -366,6 +381,17 @@ LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
   if (l.shadow_helper) result.text += kShadowHelper;
   result.text += l.out;
   result.state.assign(l.state.begin(), l.state.end());
+  // A constant index past a vector, matrix or array is undefined in 1.10 and 1.20 (5.5, 5.6)
+  // and an error in 4.50.
+  CompiledPair compiled;
+  std::string error;
+  const std::string whole = result.text + "void main() { arb_main(); }\n";
+  if (!CompileLoweredPair(stage == Stage::Vertex ? whole : "",
+                          stage == Stage::Fragment ? whole : "", &compiled, &error) &&
+      error.find("index out of range") != std::string::npos) {
+    result = LoweredShader{};
+    result.not_applicable = Refusal("a constant index out of range (undefined in GLSL 1.10)");
+  }
   return result;
 }
 
