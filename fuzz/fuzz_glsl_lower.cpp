@@ -4,6 +4,8 @@
 // calls arb_main); anything else is a bug of the lowering.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include "arbiter/glsl/check.h"
 #include "arbiter/glsl/lower_vulkan.h"
@@ -31,7 +33,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const bool ok = stage == glsl::Stage::Vertex
                         ? glsl::CompileLoweredPair(text, "", &compiled, &error)
                         : glsl::CompileLoweredPair("", text, &compiled, &error);
-    if (!ok) __builtin_trap();
+    if (!ok) {
+      std::fprintf(stderr, "shader:\n%s\nlowered:\n%s\nglslang: %s\n", source->text().c_str(),
+                   text.c_str(), error.c_str());
+      __builtin_trap();
+    }
   }
   return 0;
 }
