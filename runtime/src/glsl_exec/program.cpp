@@ -132,28 +132,6 @@ std::vector<ActiveUniform> ActiveUniforms(const Gl& gl, GLuint program) {
 
 namespace {
 
-// Where assignment `name` lands in `u`: the first element and how many elements it may set.
-bool Match(const ActiveUniform& u, const std::string& name, int* first, bool* whole) {
-  if (u.name == name) {
-    *first = 0;
-    *whole = false;
-    return true;
-  }
-  if (!u.name.ends_with("[0]")) return false;
-  const std::string base = u.name.substr(0, u.name.size() - 3);
-  if (name == base) {
-    *first = 0;
-    *whole = true;
-    return true;
-  }
-  if (!name.starts_with(base + "[") || !name.ends_with("]")) return false;
-  const std::string index = name.substr(base.size() + 1, name.size() - base.size() - 2);
-  if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return false;
-  *first = std::stoi(index);
-  *whole = false;
-  return *first < u.size;
-}
-
 void Upload(const Gl& gl, GLint location, const TypeInfo& type, GLsizei count,
             const std::vector<float>& values) {
   if (type.base == BaseKind::Int || type.base == BaseKind::Sampler || type.base == BaseKind::Bool) {
@@ -245,6 +223,51 @@ GLuint PrepareProgram(const RunContext& run, const ProgramSpec& spec, std::strin
   return program;
 }
 
+bool MatchUniform(const std::string& active, int size, const std::string& name, int* first,
+                  bool* whole) {
+  *first = 0;
+  *whole = false;
+  if (active == name) return true;
+  if (!active.ends_with("[0]")) return false;
+  const std::string base = active.substr(0, active.size() - 3);
+  if (name == base) {
+    *whole = true;
+    return true;
+  }
+  if (!name.starts_with(base + "[") || !name.ends_with("]")) return false;
+  const std::string index = name.substr(base.size() + 1, name.size() - base.size() - 2);
+  if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return false;
+  *first = std::stoi(index);
+  return *first < size;
+}
+
+bool CheckUniformValues(const std::string& name, const TypeInfo& type, int size, bool whole,
+                        const std::vector<float>& values, size_t* elements, std::string* usage) {
+  const size_t per = static_cast<size_t>(type.components);
+  *elements = values.size() / per;
+  const bool count_ok = values.size() % per == 0 && *elements >= 1 &&
+                        (whole ? *elements <= static_cast<size_t>(size) : *elements == 1);
+  if (!count_ok) {
+    *usage = whole ? fmt::format(
+                         "--uniform {}: {} is a {}[{}] and takes {} value(s) per element, "
+                         "for 1 to {} elements, not {} value(s)",
+                         name, name, type.name, size, per, size, values.size())
+                   : fmt::format("--uniform {}: {} is a {} and takes {} value(s), not {}", name,
+                                 name, type.name, per, values.size());
+    return false;
+  }
+  if (type.base != BaseKind::Float) {
+    for (float v : values) {
+      if (v != std::trunc(v) || !std::isfinite(v)) {
+        *usage = fmt::format("--uniform {}: {} is of type {}: its values are integers", name, name,
+                             type.name);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool SetUniforms(const Gl& gl, GLuint program, const GlslExecInputs& inputs,
                  std::set<std::string>* used, std::set<size_t>* applied, std::string* usage) {
   const std::vector<ActiveUniform> active = ActiveUniforms(gl, program);
@@ -253,35 +276,15 @@ bool SetUniforms(const Gl& gl, GLuint program, const GlslExecInputs& inputs,
     for (const ActiveUniform& u : active) {
       int first = 0;
       bool whole = false;
-      if (!Match(u, name, &first, &whole)) continue;
+      if (!MatchUniform(u.name, u.size, name, &first, &whole)) continue;
       const TypeInfo type = LookUpGlType(u.type);
       if (type.components == 0) {
         *usage = fmt::format("--uniform {}: the uniform's type (0x{:04x}) is not supported", name,
                              u.type);
         return false;
       }
-      const size_t per = static_cast<size_t>(type.components);
-      const size_t elements = values.size() / per;
-      const bool count_ok = values.size() % per == 0 && elements >= 1 &&
-                            (whole ? elements <= static_cast<size_t>(u.size) : elements == 1);
-      if (!count_ok) {
-        *usage = whole ? fmt::format(
-                             "--uniform {}: {} is a {}[{}] and takes {} value(s) per element, "
-                             "for 1 to {} elements, not {} value(s)",
-                             name, name, type.name, u.size, per, u.size, values.size())
-                       : fmt::format("--uniform {}: {} is a {} and takes {} value(s), not {}", name,
-                                     name, type.name, per, values.size());
-        return false;
-      }
-      if (type.base != BaseKind::Float) {
-        for (float v : values) {
-          if (v != std::trunc(v) || !std::isfinite(v)) {
-            *usage = fmt::format("--uniform {}: {} is of type {}: its values are integers", name,
-                                 name, type.name);
-            return false;
-          }
-        }
-      }
+      size_t elements = 0;
+      if (!CheckUniformValues(name, type, u.size, whole, values, &elements, usage)) return false;
       const GLint location = gl.GetUniformLocation(program, name.c_str());
       if (location >= 0) {
         Upload(gl, location, type, static_cast<GLsizei>(elements), values);

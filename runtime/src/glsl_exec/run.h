@@ -9,6 +9,7 @@
 
 #include "arbiter/runtime/glsl_exec.h"
 #include "exec/exec_gl.h"
+#include "glsl_exec/types.h"
 
 namespace arbiter::runtime::glsl_exec {
 
@@ -56,6 +57,16 @@ struct ActiveUniform {
   GLint size = 1;  // array elements
 };
 std::vector<ActiveUniform> ActiveUniforms(const Gl& gl, GLuint program);
+
+// Where --uniform `name` lands in the active uniform `active` (GL's name: "w[0]" for an array
+// of `size` elements): the first element, and whether it may set several (the whole array).
+[[nodiscard]] bool MatchUniform(const std::string& active, int size, const std::string& name,
+                                int* first, bool* whole);
+// Whether `values` fit `type` (an array of `size` when `whole`): `elements` of them; false with
+// the usage error for a wrong count or a fractional integer.
+[[nodiscard]] bool CheckUniformValues(const std::string& name, const TypeInfo& type, int size,
+                                      bool whole, const std::vector<float>& values,
+                                      size_t* elements, std::string* usage);
 
 // Sets the --uniform values that the current `program` keeps; `used` gets the names of the
 // active uniforms set. A wrong number of values or a fractional integer is a usage error

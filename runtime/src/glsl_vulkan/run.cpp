@@ -15,6 +15,7 @@
 #include "arbiter/glstate/uniforms.h"
 #include "arbiter/runtime/glsl_vulkan.h"
 #include "exec/draw.h"
+#include "glsl_exec/run.h"
 #include "glsl_exec/types.h"
 #include "glsl_vulkan/builtin_state.h"
 #include "glsl_vulkan/shaders.h"
@@ -88,25 +89,6 @@ void Put(const glsl::CompiledUniform& u, const TypeInfo& type, int first, size_t
   }
 }
 
-// Where assignment `name` lands in `u` (glsl_exec's rule): the first element and whether it
-// may set several.
-bool Match(const ActiveUniform& u, const std::string& name, int* first, bool* whole) {
-  *first = 0;
-  *whole = false;
-  if (u.name == name) return true;
-  if (!u.name.ends_with("[0]")) return false;
-  const std::string base = u.name.substr(0, u.name.size() - 3);
-  if (name == base) {
-    *whole = true;
-    return true;
-  }
-  if (!name.starts_with(base + "[") || !name.ends_with("]")) return false;
-  const std::string index = name.substr(base.size() + 1, name.size() - base.size() - 2);
-  if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return false;
-  *first = std::stoi(index);
-  return *first < u.size;
-}
-
 // The user's uniforms (not built-in state, not the engine's), merged across stages.
 std::vector<ActiveUniform> ActiveUniforms(const glsl::CompiledPair& compiled) {
   std::vector<ActiveUniform> out;
@@ -134,34 +116,16 @@ bool SetUserUniforms(const std::vector<ActiveUniform>& active, const GlslExecInp
     for (const ActiveUniform& u : active) {
       int first = 0;
       bool whole = false;
-      if (!Match(u, name, &first, &whole)) continue;
+      if (!glsl_exec::MatchUniform(u.name, u.size, name, &first, &whole)) continue;
       const TypeInfo type = TypeOf(u.type);
       if (type.components == 0) {
         *usage =
             fmt::format("--uniform {}: the uniform's type ({}) is not supported", name, u.type);
         return false;
       }
-      const size_t per = static_cast<size_t>(type.components);
-      const size_t elements = values.size() / per;
-      const bool count_ok = values.size() % per == 0 && elements >= 1 &&
-                            (whole ? elements <= static_cast<size_t>(u.size) : elements == 1);
-      if (!count_ok) {
-        *usage = whole ? fmt::format(
-                             "--uniform {}: {} is a {}[{}] and takes {} value(s) per element, "
-                             "for 1 to {} elements, not {} value(s)",
-                             name, name, type.name, u.size, per, u.size, values.size())
-                       : fmt::format("--uniform {}: {} is a {} and takes {} value(s), not {}", name,
-                                     name, type.name, per, values.size());
+      size_t elements = 0;
+      if (!glsl_exec::CheckUniformValues(name, type, u.size, whole, values, &elements, usage)) {
         return false;
-      }
-      if (type.base != BaseKind::Float) {
-        for (float v : values) {
-          if (v != std::trunc(v) || !std::isfinite(v)) {
-            *usage = fmt::format("--uniform {}: {} is of type {}: its values are integers", name,
-                                 name, type.name);
-            return false;
-          }
-        }
       }
       for (const glsl::CompiledUniform* place : u.places) {
         Put(*place, type, first, elements, values, out);
