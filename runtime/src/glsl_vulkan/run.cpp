@@ -3,6 +3,8 @@
 // vector; the outputs come back from a storage buffer. The uniform blocks are filled at
 // glslang's offsets: --uniform values by name (as RunGlsl sets them, with the same usage
 // errors and notes), built-in state from glstate (builtin_state.h).
+#include "glsl_exec/run.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,7 +17,6 @@
 #include "arbiter/glstate/uniforms.h"
 #include "arbiter/runtime/glsl_vulkan.h"
 #include "exec/draw.h"
-#include "glsl_exec/run.h"
 #include "glsl_exec/types.h"
 #include "glsl_vulkan/builtin_state.h"
 #include "glsl_vulkan/shaders.h"
@@ -277,7 +278,7 @@ class Draw {
 
   bool Run(const glsl::CompiledPair& compiled, const Bindings& b, size_t count, int width,
            int height, const arbvp::GlState& state, std::string* error) {
-    if (!Layout(b, error) || !Pipeline(compiled, width, height, error)) return false;
+    if (!Layout(b, error) || !Pipeline(compiled, error)) return false;
     const VkDescriptorSet set = WriteSet(b, error);
     if (set == VK_NULL_HANDLE) return false;
     vulkan::Image* attachment = resources_->CreateAttachment(width, height, error);
@@ -372,9 +373,7 @@ class Draw {
     return true;
   }
 
-  bool Pipeline(const glsl::CompiledPair& compiled, int width, int height, std::string* error) {
-    (void)width;
-    (void)height;
+  bool Pipeline(const glsl::CompiledPair& compiled, std::string* error) {
     render_pass_ = pipelines_.RenderPass(1, error);
     if (render_pass_ == VK_NULL_HANDLE) return false;
     std::vector<VkPipelineShaderStageCreateInfo> stages;
@@ -391,51 +390,11 @@ class Draw {
     }
     VkPipelineVertexInputStateCreateInfo vertex_input{};
     vertex_input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    VkPipelineInputAssemblyStateCreateInfo assembly{};
-    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    VkPipelineViewportStateCreateInfo viewport{};
-    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{};
-    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    // A vertex shader alone: nothing is rasterised (GL_RASTERIZER_DISCARD in the GL run).
-    raster.rasterizerDiscardEnable = compiled.fragment.empty() ? VK_TRUE : VK_FALSE;
-    VkPipelineMultisampleStateCreateInfo multisample{};
-    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineColorBlendAttachmentState blend_attachment{};
-    VkPipelineColorBlendStateCreateInfo blend{};
-    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blend_attachment;  // colour writes off: the outputs go to a buffer
-    const std::array<VkDynamicState, 2> dynamic_states = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                          VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{};
-    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamic_states.size());
-    dynamic.pDynamicStates = dynamic_states.data();
-    VkGraphicsPipelineCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    info.stageCount = static_cast<uint32_t>(stages.size());
-    info.pStages = stages.data();
-    info.pVertexInputState = &vertex_input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = layout_;
-    info.renderPass = render_pass_;
-    return vulkan::Check(
-        vkCreateGraphicsPipelines(device_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
-        "vkCreateGraphicsPipelines", error);
+    // A vertex shader alone: nothing is rasterised (GL_RASTERIZER_DISCARD in the GL run); the
+    // attachment is there for the render pass, its colour writes unused.
+    return vulkan::CreatePointPipeline(device_.device(), stages, vertex_input, 1,
+                                       compiled.fragment.empty(), layout_, render_pass_, &pipeline_,
+                                       error);
   }
 
   VkDescriptorSet WriteSet(const Bindings& b, std::string* error) {

@@ -11,6 +11,7 @@
 #include <array>
 #include <list>
 #include <string>
+#include <vector>
 
 #include "arbiter/arbvp/emit.h"
 #include "exec_glsl/glsl_adapt.h"
@@ -32,6 +33,16 @@ struct Pipeline {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
 };
+
+// A point-list graphics pipeline of `stages` reading `vertex_input`, writing every channel of
+// `attachments` colour attachments, with a dynamic viewport and scissor; nothing is rasterised
+// when `rasterizer_discard`. False (with `error`) when Vulkan refuses it.
+[[nodiscard]] bool CreatePointPipeline(VkDevice device,
+                                       const std::vector<VkPipelineShaderStageCreateInfo>& stages,
+                                       const VkPipelineVertexInputStateCreateInfo& vertex_input,
+                                       int attachments, bool rasterizer_discard,
+                                       VkPipelineLayout layout, VkRenderPass render_pass,
+                                       VkPipeline* pipeline, std::string* error);
 
 class Pipelines {
  public:
