@@ -145,25 +145,6 @@ std::string LookupName(glslang::TOperator op, const glslang::TSampler& sampler) 
 
 // ---- Positions ------------------------------------------------------------------------------
 
-// The range of `length` bytes at a glslang location (string index, 1-based line and column).
-bool RangeOfLoc(const Sources& sources, const glslang::TSourceLoc& loc, size_t length,
-                const SourceFile** file, Range* range) {
-  if (loc.string < 0 || static_cast<size_t>(loc.string) >= sources.size() || loc.line < 1) {
-    return false;
-  }
-  const SourceFile* f = sources[static_cast<size_t>(loc.string)];
-  if (static_cast<uint32_t>(loc.line) > f->line_count()) return false;
-  auto column = static_cast<uint32_t>(loc.column > 0 ? loc.column - 1 : 0);
-  std::string_view line = f->LineText(static_cast<uint32_t>(loc.line));
-  if (column > line.size()) column = 0;
-  uint32_t line_start = f->LineStart(static_cast<uint32_t>(loc.line));
-  uint32_t begin = line_start + column;
-  auto end = static_cast<uint32_t>(std::min<size_t>(begin + length, line_start + line.size()));
-  *file = f;
-  *range = {begin, end};
-  return true;
-}
-
 // The text with comments and preprocessor lines turned into blanks (offsets and line ends
 // kept): where declarations are looked for.
 std::string Blanked(std::string_view text) {
@@ -519,6 +500,24 @@ Contribution Make(std::string key, std::string what, int amount, const SourceFil
 
 }  // namespace
 
+bool RangeOfLoc(const Sources& sources, const glslang::TSourceLoc& loc, size_t length,
+                const SourceFile** file, Range* range) {
+  if (loc.string < 0 || static_cast<size_t>(loc.string) >= sources.size() || loc.line < 1) {
+    return false;
+  }
+  const SourceFile* f = sources[static_cast<size_t>(loc.string)];
+  if (static_cast<uint32_t>(loc.line) > f->line_count()) return false;
+  auto column = static_cast<uint32_t>(loc.column > 0 ? loc.column - 1 : 0);
+  std::string_view line = f->LineText(static_cast<uint32_t>(loc.line));
+  if (column > line.size()) column = 0;
+  uint32_t line_start = f->LineStart(static_cast<uint32_t>(loc.line));
+  uint32_t begin = line_start + column;
+  auto end = static_cast<uint32_t>(std::min<size_t>(begin + length, line_start + line.size()));
+  *file = f;
+  *range = {begin, end};
+  return true;
+}
+
 // A stage's uses, as UseCollector found them.
 struct StaticUses {
   std::map<long long, GlobalUse> globals;
@@ -603,6 +602,15 @@ const char* CompiledProgram::link_log() const {
 }
 
 const Sources& CompiledProgram::StageSources(Stage stage) const { return sources_[Index(stage)]; }
+
+bool CompiledProgram::Traverse(Stage stage, glslang::TIntermTraverser* traverser) const {
+  if (!parsed(stage)) return false;
+  glslang::TIntermediate* ast = shaders_[Index(stage)]->getIntermediate();
+  TIntermNode* root = ast != nullptr ? ast->getTreeRoot() : nullptr;
+  if (root == nullptr) return false;
+  root->traverse(traverser);
+  return true;
+}
 
 bool CompiledProgram::Reflect(Stage stage, Reflection* out) const {
   const Sources& sources = StageSources(stage);

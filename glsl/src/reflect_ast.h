@@ -13,6 +13,8 @@
 class TIntermNode;
 
 namespace glslang {
+class TIntermTraverser;
+struct TSourceLoc;
 class TShader;
 class TProgram;
 }  // namespace glslang
@@ -20,6 +22,12 @@ class TProgram;
 namespace arbiter::glsl {
 
 struct StaticUses;  // reflect.cpp
+
+// The range of `length` bytes at a glslang location (string index, 1-based line and column)
+// in `sources`; false when it lies in none of them.
+bool RangeOfLoc(const std::vector<const compiler::SourceFile*>& sources,
+                const glslang::TSourceLoc& loc, size_t length, const compiler::SourceFile** file,
+                compiler::Range* range);
 
 // One program of one or two stages compiled and linked by glslang, as CheckShader compiles
 // it, keeping the ASTs. Reports nothing: diagnostics come from CheckShader, which must have
@@ -46,10 +54,12 @@ class CompiledProgram {
   // Reflects a stage that parsed into `out` (all but `ok`). Returns false when the stage's AST
   // has no main(): there is then nothing to reflect.
   bool Reflect(Stage stage, Reflection* out) const;
-
- private:
+  // Runs `traverser` over the AST of a stage that parsed (false otherwise); the sources its
+  // locations index.
+  bool Traverse(Stage stage, glslang::TIntermTraverser* traverser) const;
   const std::vector<const compiler::SourceFile*>& StageSources(Stage stage) const;
 
+ private:
   std::vector<const compiler::SourceFile*> sources_[2];
   CheckOptions options_;  // the target's extensions, the preprocessor options
   std::unique_ptr<glslang::TShader> shaders_[2];
