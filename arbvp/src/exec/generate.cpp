@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -217,7 +218,7 @@ float EdgeComponent(size_t v, int id, size_t c) {
 // One random component: 55% uniform in [-4, 4]; 20% a multiple of 0.5 in [-4, 4] (exact
 // values on equality and floor boundaries); 15% log-scale, sign * m * 10^e with e in
 // [-4, 3] and m uniform in [1, 10) (magnitudes 1e-4 .. 1e4); 10% an edge value.
-float MixtureValue(Rng* rng) {
+float MixtureValue(Rng* rng, bool finite = false) {
   static constexpr float kPow10[] = {1e-4f, 1e-3f, 1e-2f, 1e-1f, 1.0f, 1e1f, 1e2f, 1e3f};
   int pick = rng->Below(100);
   if (pick < 55) return rng->Uniform(-4.0f, 4.0f);
@@ -227,7 +228,7 @@ float MixtureValue(Rng* rng) {
     float mantissa = 1.0f + 9.0f * rng->Unit();
     return sign * mantissa * kPow10[rng->Below(8)];
   }
-  const std::vector<float>& edge = EdgeValues();
+  const std::vector<float>& edge = finite ? FiniteEdgeValues() : EdgeValues();
   return edge[static_cast<size_t>(rng->Below(static_cast<int>(edge.size())))];
 }
 
@@ -329,6 +330,31 @@ const std::vector<float>& EdgeValues() {
   // clang-format on
   return kValues;
 }
+
+const std::vector<float>& FiniteEdgeValues() {
+  static const std::vector<float> kValues = [] {
+    std::vector<float> out;
+    for (float v : EdgeValues()) {
+      const float a = std::fabs(v);
+      if (std::isfinite(v) && (v == 0.0f || a >= std::numeric_limits<float>::min()) &&
+          a <= 0x1p32f) {
+        out.push_back(v);
+      }
+    }
+    return out;
+  }();
+  return kValues;
+}
+
+InputDraw::InputDraw(uint64_t seed, uint64_t batch, uint64_t stream)
+    : rng_(std::make_unique<gen::Rng>(
+          gen::StreamSeed(seed, batch, static_cast<gen::Stream>(stream)))) {}
+InputDraw::~InputDraw() = default;
+float InputDraw::Mixture(bool finite) { return gen::MixtureValue(rng_.get(), finite); }
+float InputDraw::Uniform(float lo, float hi) { return rng_->Uniform(lo, hi); }
+int InputDraw::Below(int n) { return rng_->Below(n); }
+GlState InputDraw::State() { return gen::RandomState(rng_.get()); }
+Texture InputDraw::TextureOf(TexTarget target) { return gen::RandomTexture(target, rng_.get()); }
 
 std::vector<InputBatch> GenerateInputs(const Program* vertex, const Program* fragment,
                                        const GenerateOptions& options) {

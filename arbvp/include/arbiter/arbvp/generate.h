@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,37 @@ std::vector<InputBatch> GenerateInputs(const Program* vertex, const Program* fra
 // and halves, tiny and huge magnitudes, pi, denormals, the float range's ends, infinities
 // and NaN.
 const std::vector<float>& EdgeValues();
+
+// The generator's random draws for another language's inputs (the GLSL verify): the same
+// numbers on every machine for a seed, a batch and a stream.
+namespace gen {
+class Rng;
+}
+class InputDraw {
+ public:
+  // Streams 1-4 are GenerateInputs' own (state, textures, parameters, vectors).
+  InputDraw(uint64_t seed, uint64_t batch, uint64_t stream);
+  ~InputDraw();
+  InputDraw(const InputDraw&) = delete;
+  InputDraw& operator=(const InputDraw&) = delete;
+
+  // A random batch's component: uniform in [-4, 4], a multiple of 0.5, log-scale in
+  // 1e-4..1e4, or an edge value; with `finite`, one of FiniteEdgeValues().
+  float Mixture(bool finite);
+  float Uniform(float lo, float hi);
+  int Below(int n);                     // n > 0
+  GlState State();                      // a random well-conditioned GL state, as a batch's
+  Texture TextureOf(TexTarget target);  // as a batch draws one for `target`
+
+ private:
+  std::unique_ptr<gen::Rng> rng_;
+};
+
+// EdgeValues() without the non-finite, denormal and huge (beyond 2^32) ones: GLSL 1.10
+// section 4.1.4 asks no more of an implementation than OpenGL's precision (OpenGL 2.0
+// section 2.1.1: about 1 part in 1e5, magnitudes to 2^32), so these are what every engine
+// must compute alike.
+const std::vector<float>& FiniteEdgeValues();
 
 // One line per input the program(s) read for vector `index` of `inputs`: the attribute,
 // parameter and state bindings read (bindings that instructions use; every element of a
