@@ -159,43 +159,54 @@ float FloatFromJson(const nlohmann::json& v) {
 
 }  // namespace
 
+nlohmann::ordered_json GlslRunResultToJson(const GlslRunResult& result) {
+  return {{"description", result.description},
+          {"usage_error", result.usage_error},
+          {"notes", result.notes},
+          {"vectors", GlslResultsToJson(result.vectors)}};
+}
+
+bool GlslRunResultFromJson(const nlohmann::json& j, GlslRunResult* result) {
+  *result = GlslRunResult{};
+  try {
+    result->description = j.at("description").get<std::string>();
+    result->usage_error = j.at("usage_error").get<std::string>();
+    result->notes = j.at("notes").get<std::vector<std::string>>();
+    for (const nlohmann::json& jv : j.at("vectors")) {
+      GlslVectorResult r;
+      r.discarded = jv.at("discarded").get<bool>();
+      for (const nlohmann::json& jo : jv.at("outputs")) {
+        GlslOutput o{jo.at("name").get<std::string>(),
+                     jo.at("stage").get<std::string>(),
+                     jo.at("type").get<std::string>(),
+                     {}};
+        for (const nlohmann::json& f : jo.at("value")) o.value.push_back(FloatFromJson(f));
+        r.outputs.push_back(std::move(o));
+      }
+      result->vectors.push_back(std::move(r));
+    }
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+  return true;
+}
+
 WorkerStatus RunGlslInWorker(const ExecOptions& options, const WorkerLimits& limits,
                              const GlslShaders& shaders, const GlslExecInputs& inputs,
                              GlslRunResult* result, std::string* error) {
   auto job = [&](std::string* payload, std::string* job_error) {
     GlslRunResult out;
     if (!RunGlsl(options, shaders, inputs, &out, job_error)) return false;
-    nlohmann::ordered_json j = {{"description", out.description},
-                                {"usage_error", out.usage_error},
-                                {"notes", out.notes},
-                                {"vectors", GlslResultsToJson(out.vectors)}};
-    *payload = j.dump();
+    *payload = GlslRunResultToJson(out).dump();
     return true;
   };
   std::string payload;
   const WorkerStatus status = RunInWorker(limits, job, &payload, error);
   if (status != WorkerStatus::Ok) return status;
   const nlohmann::json j = nlohmann::json::parse(payload, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) {
-    *error = "the worker's answer is not JSON";
+  if (j.is_discarded() || !GlslRunResultFromJson(j, result)) {
+    *error = "the worker's answer is not a run's result";
     return WorkerStatus::Crashed;
-  }
-  *result = GlslRunResult{};
-  result->description = j["description"].get<std::string>();
-  result->usage_error = j["usage_error"].get<std::string>();
-  result->notes = j["notes"].get<std::vector<std::string>>();
-  for (const nlohmann::json& jv : j["vectors"]) {
-    GlslVectorResult r;
-    r.discarded = jv["discarded"].get<bool>();
-    for (const nlohmann::json& jo : jv["outputs"]) {
-      GlslOutput o{jo["name"].get<std::string>(),
-                   jo["stage"].get<std::string>(),
-                   jo["type"].get<std::string>(),
-                   {}};
-      for (const nlohmann::json& f : jo["value"]) o.value.push_back(FloatFromJson(f));
-      r.outputs.push_back(std::move(o));
-    }
-    result->vectors.push_back(std::move(r));
   }
   return WorkerStatus::Ok;
 }

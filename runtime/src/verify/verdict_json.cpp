@@ -14,7 +14,8 @@ nlohmann::json DisagreementToJson(const Disagreement& d) {
   nlohmann::json values = nlohmann::json::object();
   for (const auto& [engine, value] : d.values) values[engine] = Bits(value);
   return {{"batch", d.batch},         {"vector", d.vector},   {"reg", d.reg},
-          {"component", d.component}, {"what", d.what},       {"tolerance", Bits(d.tolerance)},
+          {"component", d.component}, {"label", d.label},     {"what", d.what},
+          {"tolerance", Bits(d.tolerance)},
           {"values", values},         {"engines", d.engines}, {"inputs", d.inputs}};
 }
 
@@ -24,6 +25,7 @@ Disagreement DisagreementFromJson(const nlohmann::json& j) {
   d.vector = j.at("vector").get<size_t>();
   d.reg = j.at("reg").get<std::string>();
   d.component = j.at("component").get<int>();
+  d.label = j.at("label").get<std::string>();
   d.what = j.at("what").get<std::string>();
   d.tolerance = FromBits(j.at("tolerance").get<uint32_t>());
   for (const auto& [engine, value] : j.at("values").items()) {

@@ -114,4 +114,9 @@ WorkerStatus RunGlslInWorker(const ExecOptions& options, const WorkerLimits& lim
 // floats as arbvp::FloatToJson writes them.
 nlohmann::ordered_json GlslResultsToJson(const std::vector<GlslVectorResult>& results);
 
+// A whole run's result as JSON and back (what a worker process carries out): floats as
+// FloatToJson writes them. False when `j` is not such an object.
+nlohmann::ordered_json GlslRunResultToJson(const GlslRunResult& result);
+[[nodiscard]] bool GlslRunResultFromJson(const nlohmann::json& j, GlslRunResult* result);
+
 }  // namespace arbiter::runtime

@@ -73,6 +73,9 @@ struct Disagreement {
   size_t vector = 0;
   std::string reg;     // "result.color"; empty for a kill
   int component = -1;  // 0..3; -1 for a kill or a missing register
+  // GLSL: the component as GLSL names it ("gl_Position.y", "m[1].z", "f"); empty for ARB,
+  // whose components are register.xyzw.
+  std::string label;
   std::string what;    // "killed by ref only", "not written by mesa-glsl"; empty for a value
   float tolerance = 0.0f;
   // The value of each engine that ran ("ref", "mesa-arb", "mesa-glsl"), and those that
