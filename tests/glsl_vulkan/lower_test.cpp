@@ -112,8 +112,10 @@ TEST(LowerVulkanTest, Refusals) {
        "not applicable: a uniform array declared without a size"},
       {"void main() { gl_FragColor = vec4(float(gl_MaxTextureImageUnits)); }\n",
        "not applicable: gl_MaxTextureImageUnits"},
-      {"#extension GL_ARB_draw_buffers : require\nvoid main() { gl_FragData[1] = vec4(1.0); }\n",
-       "not applicable: #extension GL_ARB_draw_buffers"},
+      {"#extension GL_ARB_fragment_coord_conventions : enable\n"
+       "layout(origin_upper_left) in vec4 gl_FragCoord;\nvoid main() { gl_FragColor = "
+       "gl_FragCoord; }\n",
+       "not applicable: #extension GL_ARB_fragment_coord_conventions"},
   };
   for (const auto& [text, reason] : cases) {
     const LoweredShader l = LowerForVulkan(Stage::Fragment, text);

@@ -270,7 +270,7 @@ TEST(GlslVulkanTest, Refusals) {
        "not applicable: gl_PointCoord"},
       {"#extension GL_ARB_texture_rectangle : enable\nuniform sampler2DRect r;\n"
        "void main() { gl_FragColor = texture2DRect(r, vec2(0.0)); }\n",
-       "not applicable: #extension GL_ARB_texture_rectangle"},
+       "not applicable: sampler2DRect (rectangle textures)"},
   };
   for (const auto& [text, reason] : cases) {
     GlslRun run("", text);

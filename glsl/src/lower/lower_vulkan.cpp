@@ -11,6 +11,7 @@
 #include <memory>
 #include <set>
 
+#include "extensions.h"
 #include "lower/builtins.h"
 #include "prepare.h"
 #include "scan.h"
@@ -64,6 +65,15 @@ bool Preprocess(Stage stage, std::string_view text, std::string* out, int* versi
     return false;
   }
   return true;
+}
+
+// An extension whose enabling changes nothing in the lowered text: "all" (only warnings),
+// GL_ARB_draw_buffers (gl_FragData is 1.10's own), GL_ARB_texture_rectangle (its samplers
+// are refused where used), and what Mesa does not have (enabling it enables nothing).
+bool ChangesNothing(std::string_view extension) {
+  const Extension* known = FindExtension(extension);
+  return extension == "all" || extension == "GL_ARB_draw_buffers" ||
+         extension == "GL_ARB_texture_rectangle" || known == nullptr || !known->mesa;
 }
 
 struct Lowering {
@@ -356,7 +366,7 @@ LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
   const std::string source = BlankComments(text);
   for (const Directive& d : Directives(source)) {
     if (d.name == "extension" && d.words.size() >= 3 && d.words[2].text != "disable" &&
-        d.words[0].text != "all") {
+        !ChangesNothing(d.words[0].text)) {
       result.not_applicable = Refusal(fmt::format("#extension {}", d.words[0].text));
       return result;
     }
