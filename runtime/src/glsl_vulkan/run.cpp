@@ -608,16 +608,6 @@ bool Execute(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunRe
   return true;
 }
 
-float FloatFromJson(const nlohmann::json& v) {
-  if (v.is_string()) {
-    const std::string s = v.get<std::string>();
-    if (s == "nan") return std::numeric_limits<float>::quiet_NaN();
-    return s == "-inf" ? -std::numeric_limits<float>::infinity()
-                       : std::numeric_limits<float>::infinity();
-  }
-  return v.get<float>();
-}
-
 }  // namespace
 
 bool RunGlslVulkan(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunResult* result,
@@ -638,11 +628,8 @@ WorkerStatus RunGlslVulkanInWorker(const WorkerLimits& limits, const GlslShaders
     if (!RunGlslVulkan(shaders, inputs, &out, &refusal, job_error) && refusal.empty()) {
       return false;
     }
-    const nlohmann::ordered_json j = {{"not_applicable", refusal},
-                                      {"description", out.description},
-                                      {"usage_error", out.usage_error},
-                                      {"notes", out.notes},
-                                      {"vectors", GlslResultsToJson(out.vectors)}};
+    nlohmann::ordered_json j = GlslRunResultToJson(out);
+    j["not_applicable"] = refusal;
     *payload = j.dump();
     return true;
   };
@@ -655,24 +642,13 @@ WorkerStatus RunGlslVulkanInWorker(const WorkerLimits& limits, const GlslShaders
     return WorkerStatus::Crashed;
   }
   *result = GlslRunResult{};
+  if (!j.contains("not_applicable") || !j["not_applicable"].is_string() ||
+      !GlslRunResultFromJson(j, result)) {
+    *error = "the worker's answer is not a GLSL run's result";
+    return WorkerStatus::Crashed;
+  }
   *not_applicable = j["not_applicable"].get<std::string>();
   if (!not_applicable->empty()) return WorkerStatus::JobFailed;
-  result->description = j["description"].get<std::string>();
-  result->usage_error = j["usage_error"].get<std::string>();
-  result->notes = j["notes"].get<std::vector<std::string>>();
-  for (const nlohmann::json& jv : j["vectors"]) {
-    GlslVectorResult r;
-    r.discarded = jv["discarded"].get<bool>();
-    for (const nlohmann::json& jo : jv["outputs"]) {
-      GlslOutput o{jo["name"].get<std::string>(),
-                   jo["stage"].get<std::string>(),
-                   jo["type"].get<std::string>(),
-                   {}};
-      for (const nlohmann::json& f : jo["value"]) o.value.push_back(FloatFromJson(f));
-      r.outputs.push_back(std::move(o));
-    }
-    result->vectors.push_back(std::move(r));
-  }
   return WorkerStatus::Ok;
 }
 
