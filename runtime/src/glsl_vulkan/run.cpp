@@ -503,11 +503,8 @@ bool Execute(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunRe
   const int width = arbvp::kFramebufferWidth;
   const int height = std::max(arbvp::FramebufferHeight(count), 1);
   const IoPlan plan = glsl_vulkan::PlanIo(shaders, inputs);
-  const float near = std::clamp(inputs.state.depth_near, 0.0f, 1.0f);
-  const float far = std::clamp(inputs.state.depth_far, 0.0f, 1.0f);
   const glsl_vulkan::Generated texts =
-      glsl_vulkan::GenerateMains(shaders, vertex.text, fragment.text, plan, count, height,
-                                 std::min(near, far), std::max(near, far));
+      glsl_vulkan::GenerateMains(shaders, vertex.text, fragment.text, plan, count, height);
   glsl::CompiledPair compiled;
   if (!glsl::CompileLoweredPair(texts.vertex, texts.fragment, &compiled, error)) return false;
 

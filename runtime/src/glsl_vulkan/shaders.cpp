@@ -150,7 +150,7 @@ IoPlan PlanIo(const GlslShaders& shaders, const GlslExecInputs& inputs) {
 
 Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_vertex,
                         const std::string& lowered_fragment, const IoPlan& plan, size_t count,
-                        int height, float depth_min, float depth_max) {
+                        int height) {
   Generated out;
   const bool pair = !lowered_vertex.empty() && !lowered_fragment.empty();
   std::vector<Varying> varyings;
@@ -215,12 +215,8 @@ Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_v
   const glsl_exec::FragmentOutputs& f = plan.fragment_outputs;
   if (f.color) Store("arb_gl_FragColor", "vec4", &next, &body);
   for (int n : f.data) Store(fmt::format("arb_gl_FragData[{}]", n), "vec4", &next, &body);
-  if (f.depth) {
-    // GL clamps the depth a shader writes to the depth range.
-    Store(
-        fmt::format("clamp(arb_gl_FragDepth, float({:.9g}), float({:.9g}))", depth_min, depth_max),
-        "float", &next, &body);
-  }
+  // gl_FragDepth as written: Mesa's DEPTH32F buffer keeps it unclamped.
+  if (f.depth) Store("arb_gl_FragDepth", "float", &next, &body);
   out.fragment = fmt::format("{}{}void main() {{\n{}}}\n", lowered_fragment, declarations, body);
   return out;
 }

@@ -50,6 +50,6 @@ struct Generated {
 };
 Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_vertex,
                         const std::string& lowered_fragment, const IoPlan& plan, size_t count,
-                        int height, float depth_min, float depth_max);
+                        int height);
 
 }  // namespace arbiter::runtime::glsl_vulkan
