@@ -108,7 +108,7 @@ TEST(LowerVulkanTest, Refusals) {
       {"struct A { struct B { float x; } b; };\nuniform A a;\n"
        "void main() { gl_FragColor = vec4(a.b.x); }\n",
        "not applicable: a structure defined inside a structure"},
-      {"uniform vec4 c[];\nvoid main() { gl_FragColor = c[1]; }\n",
+      {"uniform vec4 c[];\nuniform vec4 c[4];\nvoid main() { gl_FragColor = c[1]; }\n",
        "not applicable: a uniform array declared without a size"},
       {"void main() { gl_FragColor = vec4(float(gl_MaxTextureImageUnits)); }\n",
        "not applicable: gl_MaxTextureImageUnits"},
@@ -122,6 +122,15 @@ TEST(LowerVulkanTest, Refusals) {
     EXPECT_EQ(l.not_applicable, reason) << text;
     EXPECT_EQ(l.text, "");
   }
+}
+
+// GLSL 1.10 4.1.9: an array declared without a size takes the largest constant index used,
+// plus one; 4.50 sizes no uniform implicitly, so the lowering writes that size.
+TEST(LowerVulkanTest, ImplicitlySizedUniformArray) {
+  const LoweredShader l = LowerForVulkan(
+      Stage::Fragment, "uniform vec4 c[];\nvoid main() { gl_FragColor = c[0] + c[2]; }\n");
+  ASSERT_EQ(l.not_applicable, "");
+  EXPECT_TRUE(Contains(l.text, "uniform vec4 c[3];\n")) << l.text;
 }
 
 TEST(LowerVulkanTest, LoweredIdentifier) {

@@ -3,6 +3,7 @@
 #include "arbiter/glsl/lower_vulkan.h"
 
 #include <fmt/format.h>
+#include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
@@ -31,7 +32,7 @@ std::string Refusal(std::string_view construct) {
 // #extension) and the preamble Mesa's implicit extensions bring; empty with `refusal` or
 // `error` set when the shader is one the lowering does not take.
 bool Preprocess(Stage stage, std::string_view text, std::string* out, int* version,
-                std::string* refusal) {
+                std::map<std::string, int>* implicit_sizes, std::string* refusal) {
   EnsureGlslang();
   compiler::SourceFile file("<shader>", std::string(text));
   compiler::DiagnosticSink scratch(0);
@@ -48,6 +49,27 @@ bool Preprocess(Stage stage, std::string_view text, std::string* out, int* versi
   if (prepared.include) {
     *refusal = Refusal("#include (GL_ARB_shading_language_include)");
     return false;
+  }
+  // The sizes glslang gives the uniform arrays declared without one (GLSL 1.10 4.1.9: the
+  // largest constant index used, plus one), by the shader's names.
+  bool parsed = false;
+  std::unique_ptr<glslang::TShader> ast = ParsePrepared(stage, &prepared, &parsed);
+  if (parsed && ast->getIntermediate()->getTreeRoot() != nullptr) {
+    const glslang::TIntermAggregate* root = ast->getIntermediate()->getTreeRoot()->getAsAggregate();
+    const glslang::TIntermSequence none;
+    for (TIntermNode* node : root != nullptr ? root->getSequence() : none) {
+      const glslang::TIntermAggregate* objects = node->getAsAggregate();
+      if (objects == nullptr || objects->getOp() != glslang::EOpLinkerObjects) continue;
+      for (TIntermNode* object : objects->getSequence()) {
+        const glslang::TIntermSymbol* symbol = object->getAsSymbolNode();
+        if (symbol == nullptr || symbol->getQualifier().storage != glslang::EvqUniform ||
+            !symbol->getType().isUnsizedArray()) {
+          continue;
+        }
+        (*implicit_sizes)[RestoreSpelling(symbol->getName().c_str(), prepared.renames)] =
+            symbol->getType().getImplicitArraySize();
+      }
+    }
   }
   std::vector<const char*> strings;
   std::vector<int> lengths;
@@ -79,6 +101,7 @@ bool ChangesNothing(std::string_view extension) {
 struct Lowering {
   Stage stage;
   int version;
+  std::map<std::string, int> implicit_sizes;  // uniform arrays declared without a size
   std::string out;
   std::string refusal;
   std::set<std::string> state;    // built-in uniforms used
@@ -220,6 +243,7 @@ bool Rewrite(std::string_view code, Lowering* l) {
       functions.insert(tokens[i].text);
     }
   }
+  std::set<std::string> declared_unsized;
   int depth = 0;
   int struct_depth = -1;  // the depth outside the structure being defined; -1: none
   size_t copied = 0;      // `code` is copied up to here
@@ -263,10 +287,17 @@ bool Rewrite(std::string_view code, Lowering* l) {
       }
       if (depth == 0 && w == "uniform") {
         const size_t end = StatementEnd(tokens, i);
-        for (size_t k = i; k + 1 < end; ++k) {
-          if (tokens[k].text == "[" && tokens[k + 1].text == "]") {
+        for (size_t k = i + 1; k + 1 < end; ++k) {
+          if (tokens[k].text != "[" || tokens[k + 1].text != "]") continue;
+          // 4.50 sizes no uniform implicitly: the size glslang found, declared once.
+          const std::string name(tokens[k - 1].text);
+          auto size = l->implicit_sizes.find(name);
+          if (size == l->implicit_sizes.end() || size->second <= 0 ||
+              declared_unsized.count(name) > 0) {
             return Refuse(l, "a uniform array declared without a size");
           }
+          declared_unsized.insert(name);
+          after[k] += std::to_string(size->second);
         }
       }
       if (depth == 0 && w == "uniform") {
@@ -358,7 +389,10 @@ LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
   LoweredShader result;
   std::string preprocessed;
   int version = 110;
-  if (!Preprocess(stage, text, &preprocessed, &version, &result.not_applicable)) return result;
+  std::map<std::string, int> implicit_sizes;
+  if (!Preprocess(stage, text, &preprocessed, &version, &implicit_sizes, &result.not_applicable)) {
+    return result;
+  }
   // The directives glslang leaves (#version, #extension, #pragma, #line) are blanked: an
   // extension the shader enables is one the lowering does not know.
   // The shader's own #extension lines (those of Mesa's implicit extensions in glslang's
@@ -374,7 +408,7 @@ LoweredShader LowerForVulkan(Stage stage, std::string_view text) {
   // The words glslang reserves that the shader's version leaves free were renamed for glslang
   // 12 (source_text.h): their own spelling, renamed below where 4.50 reserves them.
   std::string code = BlankComments(RestoreSpelling(preprocessed));
-  Lowering l{stage, version, {}, {}, {}, {}, {}, false};
+  Lowering l{stage, version, std::move(implicit_sizes), {}, {}, {}, {}, {}, false};
   for (const Directive& d : Directives(code)) {
     std::fill(code.begin() + d.hash, code.begin() + d.end, ' ');
   }
