@@ -85,8 +85,13 @@ Exit LoadShaderTest(const std::string& path, const std::string& text, LoadedGlsl
   runtime::GlslVerifySubject s;
   s.name = path;
   bool runnable = true;
+  // A shader without #version gets the one [require] asks for, on its section's header line
+  // (as `arbiter run` and piglit give it).
+  const std::string version = runtime::ShaderTestVersionDirective(test);
   auto section = [&](const runtime::ShaderTestSource& src) {
-    return Keep(path, std::string(static_cast<size_t>(src.line), '\n') + src.text, out);
+    const bool add = src.text.find("#version") == std::string::npos && !version.empty();
+    const auto pad = static_cast<size_t>(add && src.line > 0 ? src.line - 1 : src.line);
+    return Keep(path, std::string(pad, '\n') + (add ? version : "") + src.text, out);
   };
   if (!test.vertex_shaders.empty()) {
     s.vertex = section(test.vertex_shaders[0]);

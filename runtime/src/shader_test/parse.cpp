@@ -174,4 +174,20 @@ bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, 
   return true;
 }
 
+std::string ShaderTestVersionDirective(const ShaderTest& test) {
+  // piglit's shader_runner gives a shader without #version the version its [require] asks
+  // for ("GLSL >= 1.20" -> "#version 120"): 1.10 is every shader's default.
+  for (const ShaderTestLine& r : test.require) {
+    std::vector<std::string> w = shader_test::Words(r.text);
+    if (w.size() == 3 && w[0] == "GLSL" && (w[1] == ">=" || w[1] == "==") && w[2] != "1.10") {
+      std::string digits;
+      for (char c : w[2]) {
+        if (c != '.') digits += c;
+      }
+      if (digits.size() == 3) return "#version " + digits + "\n";
+    }
+  }
+  return "";
+}
+
 }  // namespace arbiter::runtime

@@ -133,21 +133,7 @@ bool Session::TranslateArb(std::string* vertex, std::string* fragment) {
   return true;
 }
 
-std::string Session::VersionDirective() const {
-  // piglit's shader_runner gives a shader without #version the version its [require] asks
-  // for ("GLSL >= 1.20" -> "#version 120"): 1.10 is every shader's default.
-  for (const ShaderTestLine& r : test_.require) {
-    std::vector<std::string> w = Words(r.text);
-    if (w.size() == 3 && w[0] == "GLSL" && (w[1] == ">=" || w[1] == "==") && w[2] != "1.10") {
-      std::string digits;
-      for (char c : w[2]) {
-        if (c != '.') digits += c;
-      }
-      if (digits.size() == 3) return "#version " + digits + "\n";
-    }
-  }
-  return "";
-}
+std::string Session::VersionDirective() const { return ShaderTestVersionDirective(test_); }
 
 std::string Session::WithVersion(const std::string& text) const {
   if (text.find("#version") != std::string::npos) return text;

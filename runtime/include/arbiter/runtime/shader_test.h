@@ -48,6 +48,10 @@ struct ShaderTest {
 bool ParseShaderTest(std::string_view text, std::string path, ShaderTest* test, int* error_line,
                      std::string* error);
 
+// The #version piglit's shader_runner gives a GLSL shader of `test` that has none: the one
+// its [require] asks for ("GLSL >= 1.20" -> "#version 120\n"); "" for 1.10, the default.
+std::string ShaderTestVersionDirective(const ShaderTest& test);
+
 enum class TestStatus : uint8_t {
   Pass,
   Fail,  // a probe failed, a program was rejected, or the file is malformed
