@@ -314,11 +314,12 @@ Exit VerifyGlsl(const VerifyCommandOptions& options, const std::vector<std::stri
   for (runtime::Verdict& v : runtime::VerifyGlsl(loaded.subjects, verify)) {
     verdicts->push_back(std::move(v));
   }
-  *setup = fmt::format("GLSL engines {} ({} via {})", fmt::join(engines, ", "),
-                       "softpipe and llvmpipe", options.mesa.backend);
-  if (std::find(engines.begin(), engines.end(), runtime::kGlslEngineVulkan) != engines.end()) {
-    *setup += ", vulkan on lavapipe";
-  }
+  *setup = fmt::format(
+      "GLSL engines {} (Mesa's GL drivers via {}{})", fmt::join(engines, ", "),
+      options.mesa.backend,
+      std::find(engines.begin(), engines.end(), runtime::kGlslEngineVulkan) != engines.end()
+          ? ", vulkan on lavapipe"
+          : "");
   return exit;
 }
 
@@ -365,8 +366,8 @@ int RunVerify(const VerifyCommandOptions& options) {
     if (!v.error.empty()) exit = Worse(exit, Exit::Environment);
     if (!v.disagreements.empty()) exit = Worse(exit, Exit::Rejected);
   }
-  std::string setup = fmt::format("seed {}, {} random vectors, {}", options.seed, options.vectors,
-                                  fmt::join(setups, "; "));
+  std::string setup = fmt::format("seed {}, {} random vectors", options.seed, options.vectors);
+  for (const std::string& s : setups) setup += ", " + s;
   if (options.common.format == "json") {
     nlohmann::ordered_json j;
     j["seed"] = options.seed;

@@ -158,5 +158,18 @@ TEST(GlslVerifyInjection, PairOnLlvmpipe) {
                    kGlslEngineLlvmpipe, false);
 }
 
+// The same on the Vulkan engine (glslang to SPIR-V on lavapipe).
+TEST(GlslVerifyInjection, VertexOutputsOnVulkan) {
+  auto s = Load(glsl::Stage::Vertex, "inject.vert", kVertex);
+  ExpectEachCaught({"inject.vert", s->file.get(), nullptr, &s->reflection, nullptr},
+                   kGlslEngineVulkan, false);
+}
+
+TEST(GlslVerifyInjection, FragmentOutputsAndDiscardsOnVulkan) {
+  auto s = Load(glsl::Stage::Fragment, "inject.frag", kFragment);
+  ExpectEachCaught({"inject.frag", nullptr, s->file.get(), nullptr, &s->reflection},
+                   kGlslEngineVulkan, true);
+}
+
 }  // namespace
 }  // namespace arbiter::runtime
