@@ -318,8 +318,8 @@ std::function<int()> AddExecCommand(CLI::App* app) {
   auto options = std::make_shared<ExecCommandOptions>();
   CLI::App* exec = app->add_subcommand(
       "exec",
-      "run ARB programs on the reference interpreter or Mesa, or GLSL shaders on Mesa, and print "
-      "every output");
+      "run ARB programs on the reference interpreter or Mesa, or GLSL shaders on Mesa or lavapipe "
+      "(Vulkan), and print every output");
   exec->footer(
       "A vertex program and a fragment program (or a vertex and a fragment shader) given together "
       "run as a pair. With --engine all, "
