@@ -105,9 +105,9 @@ TEST(LowerVulkanTest, Refusals) {
        "not applicable: a uniform initializer (GLSL 1.20 4.3.5)"},
       {"float abs(float x) { return x; }\nvoid main() { gl_FragColor = vec4(abs(-1.0)); }\n",
        "not applicable: a redefinition of the built-in function abs"},
-      {"struct A { struct B { float x; } b; };\nuniform A a;\n"
-       "void main() { gl_FragColor = vec4(a.b.x); }\n",
-       "not applicable: a structure defined inside a structure"},
+      {"struct A { struct B { struct C { float x; } c; } b; };\nuniform A a;\n"
+       "void main() { gl_FragColor = vec4(a.b.c.x); }\n",
+       "not applicable: a structure defined inside a structure inside a structure"},
       {"uniform vec4 c[];\nuniform vec4 c[4];\nvoid main() { gl_FragColor = c[1]; }\n",
        "not applicable: a uniform array declared without a size"},
       {"void main() { gl_FragColor = vec4(float(gl_MaxTextureImageUnits)); }\n",
@@ -131,6 +131,24 @@ TEST(LowerVulkanTest, ImplicitlySizedUniformArray) {
       Stage::Fragment, "uniform vec4 c[];\nvoid main() { gl_FragColor = c[0] + c[2]; }\n");
   ASSERT_EQ(l.not_applicable, "");
   EXPECT_TRUE(Contains(l.text, "uniform vec4 c[3];\n")) << l.text;
+}
+
+// 4.50 nests no structure definition: the inner one (named or not) moves before the outer.
+TEST(LowerVulkanTest, NestedStructureDefinitions) {
+  const LoweredShader l =
+      LowerForVulkan(Stage::Fragment,
+                     "struct A { struct B { float x; } b; struct { vec2 y; } n; };\n"
+                     "uniform A a;\n"
+                     "void main() { gl_FragColor = vec4(a.b.x, a.n.y, 1.0); }\n");
+  ASSERT_EQ(l.not_applicable, "");
+  EXPECT_TRUE(Contains(l.text,
+                       "struct B { float x;};\nstruct arb_s_0 { vec2 y;};\n"
+                       "struct A { B b;arb_s_0 n;};\n"))
+      << l.text;
+  CompiledPair compiled;
+  std::string error;
+  EXPECT_TRUE(CompileLoweredPair("", l.text + "void main() { arb_main(); }\n", &compiled, &error))
+      << error;
 }
 
 TEST(LowerVulkanTest, LoweredIdentifier) {

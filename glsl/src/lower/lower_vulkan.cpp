@@ -246,7 +246,14 @@ bool Rewrite(std::string_view code, Lowering* l) {
   std::set<std::string> declared_unsized;
   int depth = 0;
   int struct_depth = -1;  // the depth outside the structure being defined; -1: none
-  size_t copied = 0;      // `code` is copied up to here
+  size_t outer_start = std::string::npos;  // where its definition starts in `out`
+  struct Inner {
+    size_t start = std::string::npos;  // a structure defined inside it: its start in `out`
+    int depth = -1;                    // the depth outside its body
+    std::string name;
+  } inner;
+  int nameless = 0;
+  size_t copied = 0;  // `code` is copied up to here
   std::string& out = l->out;
   for (size_t i = 0; i < tokens.size(); ++i) {
     const Token& t = tokens[i];
@@ -261,11 +268,33 @@ bool Rewrite(std::string_view code, Lowering* l) {
     std::string spelled(t.text);
     if (t.text == "{" && i > 0 &&
         (tokens[i - 1].text == "struct" || (i > 1 && tokens[i - 2].text == "struct"))) {
-      if (struct_depth >= 0) return Refuse(l, "a structure defined inside a structure");
-      struct_depth = depth - 1;
+      if (struct_depth < 0) {
+        struct_depth = depth - 1;
+      } else if (inner.depth < 0 && inner.start != std::string::npos) {
+        inner.depth = depth - 1;
+        if (tokens[i - 1].text == "struct") spelled = inner.name + " {";  // a nameless one
+      } else {
+        return Refuse(l, "a structure defined inside a structure inside a structure");
+      }
     }
-    if (t.text == "}" && depth == struct_depth) struct_depth = -1;
-    if (t.kind == Token::Identifier) {
+    if (t.text == "}" && depth == struct_depth) {
+      struct_depth = -1;
+      outer_start = std::string::npos;
+    }
+    if (t.text == "struct") {
+      if (struct_depth < 0) {
+        outer_start = out.size();
+      } else {
+        // 4.50 nests no structure definition (1.10 does): the inner one is moved before the
+        // outer and named where it stood.
+        inner.start = out.size();
+        inner.name = tokens.size() > i + 2 && tokens[i + 1].kind == Token::Identifier &&
+                             tokens[i + 2].text == "{"
+                         ? LoweredIdentifier(tokens[i + 1].text)
+                         : fmt::format("arb_s_{}", nameless++);
+      }
+    }
+    if (t.kind == Token::Identifier && t.text != "struct") {
       const std::string_view w = t.text;
       const bool call = next(1) == "(";
       // GLSL 1.10 leaves 1.20's new keywords to the shader's names.
@@ -276,8 +305,9 @@ bool Rewrite(std::string_view code, Lowering* l) {
       // A variable named like a built-in function hides it in 1.10 and 1.20 (not in 4.50);
       // a function that redefines one replaces every overload of the name (refused).
       if (lower::IsBuiltinFunction(w) && !w.starts_with("gl_")) {
-        if (call && i > 0 && tokens[i - 1].kind == Token::Identifier &&
-            tokens[i - 1].text != "return") {
+        const std::string_view before = i > 0 ? tokens[i - 1].text : "";
+        if (call && i > 0 && tokens[i - 1].kind == Token::Identifier && before != "return" &&
+            before != "else" && before != "do") {
           return Refuse(l, fmt::format("a redefinition of the built-in function {}", w));
         }
         if (!call) {
@@ -370,6 +400,15 @@ bool Rewrite(std::string_view code, Lowering* l) {
     }
     out += spelled;
     if (auto it = after.find(i); it != after.end()) out += it->second;
+    if (t.text == "}" && depth == inner.depth && inner.start != std::string::npos &&
+        outer_start != std::string::npos) {
+      const std::string definition = out.substr(inner.start) + ";\n";
+      out.erase(inner.start);
+      out += inner.name;
+      out.insert(outer_start, definition);
+      outer_start += definition.size();
+      inner = {};
+    }
   }
   out.append(code.substr(copied));
   return true;
