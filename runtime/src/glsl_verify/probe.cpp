@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <set>
 
 #include "glsl_verify/internal.h"
@@ -535,6 +536,14 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
   std::set<std::string> constants;
   for (size_t i = 0; i < scan.size(); ++i) {
     if (scan[i].text.rfind("gl_Max", 0) == 0) constants.insert(std::string(scan[i].text));
+    // glslang and Mesa fold a division by a literal zero before anything runs, each to its
+    // own value: no site to wrap, but a cause all the same.
+    if ((scan[i].text == "/" || scan[i].text == "/=") && i + 1 < scan.size() &&
+        std::isdigit(static_cast<unsigned char>(scan[i + 1].text.back())) != 0 &&
+        std::strtod(std::string(scan[i + 1].text).c_str(), nullptr) == 0.0) {
+      probe->static_causes.insert(
+          "a division by the constant zero (GLSL 1.10 section 4.1.4: undefined)");
+    }
     if (scan[i].text == "gl_PointCoord") {
       probe->static_causes.insert(
           "gl_PointCoord outside a point sprite (GL 2.0 section 3.3.1: undefined)");
