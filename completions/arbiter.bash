@@ -90,7 +90,7 @@ _arbiter() {
     --driver) COMPREPLY=($(compgen -W "softpipe llvmpipe" -- "$cur")); return 0 ;;
     --backend) COMPREPLY=($(compgen -W "osmesa egl" -- "$cur")); return 0 ;;
     --engine) COMPREPLY=($(compgen -W "ref mesa all vulkan" -- "$cur")); return 0 ;;
-    --engines) COMPREPLY=($(compgen -W "ref mesa-arb mesa-glsl mesa-glsl330 mesa-es300 mesa-es100 vulkan-spirv" -- "$cur")); return 0 ;;
+    --engines) COMPREPLY=($(compgen -W "ref mesa-arb mesa-glsl mesa-glsl330 mesa-es300 mesa-es100 vulkan-spirv softpipe llvmpipe vulkan" -- "$cur")); return 0 ;;
     --limits)
       COMPREPLY=($(compgen -W "spec-min mesa r300 r500 i915 nv30 nv40" -- "$cur"))
       _arbiter_files json
