@@ -182,10 +182,11 @@ nlohmann::ordered_json VerdictJson(const runtime::Verdict& v, size_t max_reports
 }
 
 // The subjects: each program alone, or with --pair one vertex + fragment pair.
-bool Subjects(const VerifyCommandOptions& options, const std::vector<LoadedArb>& loaded,
+bool Subjects(const VerifyCommandOptions& options, const std::vector<const LoadedArb*>& loaded,
               std::vector<runtime::VerifySubject>* subjects) {
   if (!options.pair) {
-    for (const LoadedArb& l : loaded) {
+    for (const LoadedArb* p : loaded) {
+      const LoadedArb& l = *p;
       runtime::VerifySubject s;
       s.name = l.input.display_path;
       bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
@@ -196,14 +197,15 @@ bool Subjects(const VerifyCommandOptions& options, const std::vector<LoadedArb>&
     return true;
   }
   runtime::VerifySubject s;
-  for (const LoadedArb& l : loaded) {
+  for (const LoadedArb* p : loaded) {
+    const LoadedArb& l = *p;
     bool vp = l.checked.program->kind == arbvp::ProgramKind::Vertex;
     if (vp ? s.vertex != nullptr : s.fragment != nullptr) return false;
     (vp ? s.vertex : s.fragment) = l.checked.program.get();
     (vp ? s.vertex_source : s.fragment_source) = l.source.get();
   }
   if (!s.vertex || !s.fragment || loaded.size() != 2) return false;
-  s.name = loaded[0].input.display_path + " + " + loaded[1].input.display_path;
+  s.name = loaded[0]->input.display_path + " + " + loaded[1]->input.display_path;
   subjects->push_back(s);
   return true;
 }
@@ -228,10 +230,12 @@ std::vector<std::string> ArbArguments(const VerifyCommandOptions& options) {
   return out;
 }
 
-// Verifies the ARB programs of `args`: their verdicts are appended.
+// Verifies the ARB programs of `args`: their verdicts are appended. `loaded` keeps the
+// programs the reports point into.
 Exit VerifyArb(const VerifyCommandOptions& options, const std::vector<std::string>& args,
-               const std::vector<std::string>& engines, std::vector<runtime::Verdict>* verdicts,
-               std::vector<compiler::FileReport>* reports, size_t* rejected, std::string* setup) {
+               const std::vector<std::string>& engines, std::vector<LoadedArb>* loaded,
+               std::vector<runtime::Verdict>* verdicts, std::vector<compiler::FileReport>* reports,
+               size_t* rejected, std::string* setup) {
   runtime::VerifyOptions verify;
   if (!runtime::ParseBackend(options.mesa.backend, &verify.exec.backend)) return Exit::Usage;
   verify.exec.driver = options.mesa.driver;
@@ -265,13 +269,12 @@ Exit VerifyArb(const VerifyCommandOptions& options, const std::vector<std::strin
 
   CommonOptions common = options.common;
   common.files = args;
-  std::vector<LoadedArb> loaded;
-  Exit exit = LoadArbPrograms(common, "verify", &loaded, reports);
+  Exit exit = LoadArbPrograms(common, "verify", loaded, reports);
   if (exit == Exit::Usage) return exit;
-  for (const LoadedArb& l : loaded) *rejected += l.ok() ? 0 : 1;
-  std::vector<LoadedArb> valid;
-  for (LoadedArb& l : loaded) {
-    if (l.ok()) valid.push_back(std::move(l));
+  for (const LoadedArb& l : *loaded) *rejected += l.ok() ? 0 : 1;
+  std::vector<const LoadedArb*> valid;
+  for (const LoadedArb& l : *loaded) {
+    if (l.ok()) valid.push_back(&l);
   }
   std::vector<runtime::VerifySubject> subjects;
   if (!Subjects(options, valid, &subjects)) {
@@ -346,9 +349,11 @@ int RunVerify(const VerifyCommandOptions& options) {
   Exit exit = Exit::Ok;
   std::vector<std::string> setups;
   const std::vector<std::string> arb_args = ArbArguments(options);
+  std::vector<LoadedArb> arb_loaded;  // the reports point into these
   if (!arb_args.empty()) {
     std::string setup;
-    exit = VerifyArb(options, arb_args, arb_engines, &verdicts, &reports, &rejected, &setup);
+    exit = VerifyArb(options, arb_args, arb_engines, &arb_loaded, &verdicts, &reports, &rejected,
+                     &setup);
     if (exit == Exit::Usage) return static_cast<int>(exit);
     if (!setup.empty()) setups.push_back(setup);
   }
