@@ -15,7 +15,7 @@ enum class BuiltinRole : uint8_t {
   Keep,    // 4.50 has it with the same meaning (gl_FrontFacing)
 };
 
-enum StageMask : uint8_t { kVertex = 1, kFragment = 2, kBoth = 3 };
+enum StageMask : uint8_t { Vertex = 1, Fragment = 2, BothStages = 3 };
 
 struct BuiltinVariable {
   std::string_view name;  // "gl_LightSource"

@@ -78,8 +78,9 @@ void Std140Members(const glslang::TType& t, const std::string& path, int offset,
     int at = 0;
     for (const glslang::TTypeLoc& m : *t.getStruct()) {
       at = RoundUp(at, Std140Align(*m.type));
-      const std::string name(m.type->getFieldName().c_str());
-      Std140Members(*m.type, path.empty() ? name : path + "." + name, offset + at, fragment, out);
+      std::string name(m.type->getFieldName().c_str());
+      if (!path.empty()) name.insert(0, path + ".");
+      Std140Members(*m.type, name, offset + at, fragment, out);
       at += Std140Size(*m.type);
     }
     return;

@@ -123,7 +123,7 @@ bool LowerBuiltin(Lowering* l, std::string_view name, std::string* spelled) {
     return true;
   }
   const BuiltinVariable* v = lower::FindBuiltinVariable(name);
-  const uint8_t mask = l->stage == Stage::Vertex ? lower::kVertex : lower::kFragment;
+  const uint8_t mask = l->stage == Stage::Vertex ? lower::Vertex : lower::Fragment;
   if (v == nullptr || (v->stages & mask) == 0) return Refuse(l, std::string(name));
   if (v->role == BuiltinRole::Keep) {
     *spelled = std::string(name);
@@ -171,7 +171,7 @@ std::string Declarations(const Lowering& l) {
 
 std::string Globals(Stage stage) {
   std::string out;
-  const uint8_t mask = stage == Stage::Vertex ? lower::kVertex : lower::kFragment;
+  const uint8_t mask = stage == Stage::Vertex ? lower::Vertex : lower::Fragment;
   for (std::string_view name : {"gl_Vertex",
                                 "gl_Normal",
                                 "gl_Color",
@@ -386,7 +386,7 @@ bool Rewrite(std::string_view code, Lowering* l) {
           const std::string sampler(tokens[i + 2].text);
           l->shadow.insert(sampler);
           l->shadow_helper = true;
-          spelled = "arb_shadow(" + spelled;
+          spelled.insert(0, "arb_shadow(");
           after[close] += fmt::format(", arb_depthmode_{})", LoweredIdentifier(sampler));
         }
       } else if (w.starts_with("gl_")) {

@@ -191,7 +191,9 @@ bool BuiltinStateValue(std::string_view path, const arbvp::GlState& state,
         value->assign(d, d + 3);
         break;
       case Part::Mat3:
-        for (int col = 0; col < 3; ++col) value->insert(value->end(), d + 4 * col, d + 4 * col + 3);
+        for (size_t col = 0; col < 3; ++col) {
+          value->insert(value->end(), d + 4 * col, d + 4 * col + 3);
+        }
         break;
     }
     return true;

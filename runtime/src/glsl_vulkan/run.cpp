@@ -71,9 +71,9 @@ void Put(const glsl::CompiledUniform& u, const TypeInfo& type, int first, size_t
       for (int r = 0; r < rows; ++r) {
         const float v =
             values[e * static_cast<size_t>(type.components) + static_cast<size_t>(c * rows + r)];
-        const size_t byte =
-            static_cast<size_t>(u.offset + (first + static_cast<int>(e)) * u.array_stride +
-                                c * u.matrix_stride + 4 * r);
+        const int at =
+            u.offset + (first + static_cast<int>(e)) * u.array_stride + c * u.matrix_stride + 4 * r;
+        const auto byte = static_cast<size_t>(at);
         if (byte / 4 >= words.size()) continue;
         uint32_t word = 0;
         if (type.base == BaseKind::Float) {
@@ -473,10 +473,11 @@ std::vector<float> InputRecords(const IoPlan& plan, const GlslExecInputs& inputs
       auto it = v.find(in.name);
       const std::vector<float> numbers = it != v.end() ? it->second : std::vector<float>{};
       for (int c = 0; c < columns; ++c) {
-        float* column = record + 4 * (in.first + c);
+        float* column = record + 4 * static_cast<size_t>(in.first + c);
         const float fill[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         for (int r = 0; r < 4; ++r) {
-          const size_t at = static_cast<size_t>(c * rows + r);
+          const auto at =
+              static_cast<size_t>(c) * static_cast<size_t>(rows) + static_cast<size_t>(r);
           column[r] = r < rows && at < numbers.size() ? numbers[at] : fill[r];
         }
       }

@@ -215,8 +215,9 @@ Generated GenerateMains(const GlslShaders& shaders, const std::string& lowered_v
   const glsl_exec::FragmentOutputs& f = plan.fragment_outputs;
   if (f.color) Store("arb_gl_FragColor", "vec4", &next, &body);
   for (int n : f.data) Store(fmt::format("arb_gl_FragData[{}]", n), "vec4", &next, &body);
-  // gl_FragDepth as written: Mesa's DEPTH32F buffer keeps it unclamped.
-  if (f.depth) Store("arb_gl_FragDepth", "float", &next, &body);
+  // GL 2.0 3.11.2: the depth a fragment shader writes is clamped to [0, 1] (softpipe keeps
+  // it unclamped in its DEPTH32F buffer, a deviation tests/glsl_exec/glsl-deviations.txt lists).
+  if (f.depth) Store("clamp(arb_gl_FragDepth, 0.0, 1.0)", "float", &next, &body);
   out.fragment = fmt::format("{}{}void main() {{\n{}}}\n", lowered_fragment, declarations, body);
   return out;
 }
