@@ -380,10 +380,18 @@ std::string UninitializedVariables(const Scanner& scan, std::vector<Edit>* edits
       "const", "uniform", "varying", "attribute", "in", "out", "inout", "invariant", "centroid"};
   std::string globals;
   int depth = 0;
+  std::vector<bool> structs;  // per open brace: a structure's body (members, no declarations)
   for (size_t i = 0; i < scan.size(); ++i) {
     const std::string_view t = scan[i].text;
-    if (t == "{") ++depth;
-    if (t == "}") --depth;
+    if (t == "{") {
+      ++depth;
+      structs.push_back((i > 0 && scan.Is(i - 1, "struct")) || (i > 1 && scan.Is(i - 2, "struct")));
+    }
+    if (t == "}") {
+      --depth;
+      if (!structs.empty()) structs.pop_back();
+    }
+    if (std::find(structs.begin(), structs.end(), true) != structs.end()) continue;
     const bool start = i == 0 || scan.Is(i - 1, ";") || scan.Is(i - 1, "{") ||
                        scan.Is(i - 1, "}") ||
                        (scan.Is(i - 1, "(") && i > 1 && scan.Is(i - 2, "for"));
@@ -446,25 +454,40 @@ std::string SentinelWrites(const glsl::Reflection& r,
   return out;
 }
 
-// The offset just past the last #version or #extension line: where the helpers go.
-uint32_t HelperOffset(std::string_view text) {
-  uint32_t at = 0;
-  size_t line = 0;
-  while (line < text.size()) {
+// Where the helpers go: before the shader's first token outside any #if (after #version,
+// #extension and the like), on that token's line, so that no line moves (a shader may test
+// __LINE__, and arbiter's checker reads diagnostics' lines back). npos when there is none.
+uint32_t HelperOffset(std::string_view text, const Scanner& scan) {
+  // The #if depth at the start of each line.
+  std::vector<int> depth_at;
+  int depth = 0;
+  for (size_t line = 0; line <= text.size();) {
+    depth_at.push_back(depth);
     size_t end = text.find('\n', line);
     if (end == std::string_view::npos) end = text.size();
     std::string_view l = text.substr(line, end - line);
-    size_t first = l.find_first_not_of(" \t");
+    const size_t first = l.find_first_not_of(" \t");
     if (first != std::string_view::npos && l[first] == '#') {
       std::string_view d = l.substr(first + 1);
       d.remove_prefix(std::min(d.find_first_not_of(" \t"), d.size()));
-      if (d.rfind("version", 0) == 0 || d.rfind("extension", 0) == 0) {
-        at = static_cast<uint32_t>(std::min(end + 1, text.size()));
-      }
+      if (d.starts_with("if")) ++depth;  // #if, #ifdef, #ifndef
+      if (d.starts_with("endif")) --depth;
     }
     line = end + 1;
   }
-  return at;
+  for (size_t i = 0; i < scan.size(); ++i) {
+    const auto line =
+        static_cast<size_t>(std::count(text.begin(), text.begin() + scan[i].begin, '\n'));
+    if (line < depth_at.size() && depth_at[line] == 0) return scan[i].begin;
+  }
+  return static_cast<uint32_t>(text.size());
+}
+
+// Whether token `i` lies in a const declaration, whose initializer must stay a constant
+// expression (no call of a wrapper).
+bool InConstDeclaration(const Scanner& scan, size_t i) {
+  while (i > 0 && !scan.Is(i - 1, ";") && !scan.Is(i - 1, "{") && !scan.Is(i - 1, "}")) --i;
+  return scan.Is(i, "const");
 }
 
 // The instrumented text of one stage; false (with `why`) when a hazard cannot be wrapped.
@@ -480,7 +503,7 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
   for (const glsl::Hazard& h : glsl::FindHazards(stage, sources)) {
     if (h.file != &file) continue;  // a macro's expansion: not instrumented
     const size_t i = scan.At(h.range.begin);
-    if (i == Scanner::npos) continue;
+    if (i == Scanner::npos || InConstDeclaration(scan, i)) continue;
     const auto site = static_cast<int>(probe->sites.size());
     const std::string tail = fmt::format(", {}.0)", site);
     bool placed = false;
@@ -493,8 +516,8 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
     } else if (h.kind == glsl::HazardKind::Index && scan.Is(i, "[")) {
       const size_t close = scan.Match(i);
       if (close != Scanner::npos && close > i + 1) {
-        Wrap(scan[i + 1].begin, scan[close].begin, "arb_probe_index(",
-             fmt::format(", {}, {}.0)", h.size, site), &edits);
+        Wrap(scan[i + 1].begin, scan[close].begin, "arb_probe_index((",
+             fmt::format("), {}, {}.0)", h.size, site), &edits);
         placed = true;
       }
     } else if ((h.kind == glsl::HazardKind::Projection || h.kind == glsl::HazardKind::CubeFace) &&
@@ -572,6 +595,14 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
   }
   const bool vertex = stage == glsl::Stage::Vertex;
   if (!vertex) {
+    for (size_t i = 0; i + 1 < scan.size(); ++i) {
+      if (scan[i].text == "varying" && scan.Is(i + 1, "out")) {
+        *why =
+            "the shader declares outputs of its own (EXT_gpu_shader4), beside which "
+            "gl_FragData cannot be written";
+        return false;
+      }
+    }
     for (const glsl::BuiltinUse& b : reflection.builtins_written) {
       if (b.name == "gl_FragData" || b.name == kProbeFragData) {
         *why = "the shader writes gl_FragData[7] or indexes gl_FragData by a variable";
@@ -580,7 +611,10 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
     }
   }
   const std::string globals = UninitializedVariables(scan, &edits);
-  edits.push_back({HelperOffset(source), -1, 0, 0, Helpers(kinds, vertex)});
+  // The helpers on one line of their own text, before the first token.
+  std::string helpers = Helpers(kinds, vertex);
+  std::replace(helpers.begin(), helpers.end(), '\n', ' ');
+  edits.push_back({HelperOffset(source, scan), -1, 0, 0, helpers});
   *text = Apply(source, std::move(edits));
   *text += fmt::format(
       "\nvoid main() {{\n  arb_probe_bits = 0.0;\n  arb_probe_site = -1.0;\n{}{}"
