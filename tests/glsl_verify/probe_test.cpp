@@ -165,10 +165,13 @@ TEST(GlslProbe, SentinelsShowWhatAPathNeverWrote) {
                   "varying float t;\n"
                   "attribute float c;\n"
                   "float g;\n"
+                  "struct S { float k; vec2 p; };\n"
+                  "S gs;\n"
                   "void main() {\n"
                   "  float x;\n"
-                  "  if (c > 0.0) { t = 1.0; x = 2.0; g = 3.0; }\n"
-                  "  gl_Position = vec4(x, g, 0.0, 1.0);\n"
+                  "  S ls;\n"
+                  "  if (c > 0.0) { t = 1.0; x = 2.0; g = 3.0; gs.k = 4.0; ls.p = vec2(5.0); }\n"
+                  "  gl_Position = vec4(x, g, gs.k, ls.p.y);\n"
                   "}\n");
   GlslVerifySubject subject{"c.vert", v.file.get(), nullptr, &v.reflection, nullptr};
   const Probe probe = glsl_verify::MakeProbe(subject);
@@ -184,13 +187,15 @@ TEST(GlslProbe, SentinelsShowWhatAPathNeverWrote) {
   // Written on the first vector's path: the same in both runs.
   EXPECT_EQ(Output(first[0], "t")->value, Output(second[0], "t")->value);
   EXPECT_EQ(Output(first[0], "gl_Position")->value, Output(second[0], "gl_Position")->value);
-  // Not on the second's: t, the local x and the global g take each run's sentinel.
+  EXPECT_EQ(Output(first[0], "gl_Position")->value, (std::vector<float>{2, 3, 4, 5}));
+  // Not on the second's: t, the local x, the global g and the structures' members take each
+  // run's sentinel.
   EXPECT_EQ(Output(first[1], "t")->value, std::vector<float>{0.3125f});
   EXPECT_EQ(Output(second[1], "t")->value, std::vector<float>{0.6875f});
   EXPECT_EQ(Output(first[1], "gl_Position")->value,
-            (std::vector<float>{0.3125f, 0.3125f, 0.0f, 1.0f}));
+            (std::vector<float>{0.3125f, 0.3125f, 0.3125f, 0.3125f}));
   EXPECT_EQ(Output(second[1], "gl_Position")->value,
-            (std::vector<float>{0.6875f, 0.6875f, 0.0f, 1.0f}));
+            (std::vector<float>{0.6875f, 0.6875f, 0.6875f, 0.6875f}));
 }
 
 }  // namespace

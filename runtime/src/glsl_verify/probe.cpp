@@ -372,52 +372,164 @@ std::string SentinelValue(const std::string& type) {
   return "";
 }
 
-// Variables declared without an initializer, which a path may read before writing: locals
-// get the sentinel as their initializer (an edit), globals are set from the wrapper's main
-// (the statements returned), since a global's initializer must be constant.
+// A structure's members: (name, type, elements: 0 for no array, -1 for a size that is no
+// literal).
+struct Member {
+  std::string name;
+  std::string type;
+  int elements = 0;
+};
+using Structs = std::map<std::string, std::vector<Member>, std::less<>>;
+
+// The declarators of a declaration whose type ends before token `j` (names with their array
+// sizes, those with an initializer marked), up to its ';'; `*end` the ';'.
+struct Declarator {
+  size_t token = 0;
+  int elements = 0;
+  bool initialized = false;
+};
+std::vector<Declarator> Declarators(const Scanner& scan, size_t j, size_t* end) {
+  std::vector<Declarator> out;
+  *end = Scanner::npos;
+  while (scan.Ident(j)) {
+    Declarator d{j, 0, false};
+    size_t next = j + 1;
+    if (scan.Is(next, "[")) {
+      const size_t close = scan.Match(next);
+      if (close == Scanner::npos) return out;
+      // An integer literal (decimal, octal or hexadecimal, as GLSL 1.10 section 4.1.3 writes
+      // them); anything else: not known here.
+      d.elements =
+          close == next + 2
+              ? static_cast<int>(std::strtol(std::string(scan[next + 1].text).c_str(), nullptr, 0))
+              : -1;
+      if (d.elements <= 0) d.elements = -1;
+      next = close + 1;
+    }
+    if (scan.Is(next, "=")) {
+      d.initialized = true;
+      next = scan.Assignment(next + 1);
+      if (next == Scanner::npos) return out;
+    }
+    out.push_back(d);
+    if (!scan.Is(next, ",")) {
+      if (scan.Is(next, ";")) *end = next;
+      return out;
+    }
+    j = next + 1;
+  }
+  return out;
+}
+
+// The structures the shader defines, by name (not one defined twice, in nested scopes:
+// which one a declaration means is not known here).
+Structs StructsOf(const Scanner& scan) {
+  Structs out;
+  std::set<std::string> twice;
+  for (size_t i = 0; i + 2 < scan.size(); ++i) {
+    if (scan[i].text != "struct" || !scan.Ident(i + 1) || !scan.Is(i + 2, "{")) continue;
+    const size_t close = scan.Match(i + 2);
+    if (close == Scanner::npos) continue;
+    const std::string name(scan[i + 1].text);
+    if (out.count(name) > 0) twice.insert(name);
+    std::vector<Member>& members = out[name];
+    for (size_t k = i + 3; k < close;) {
+      size_t end = Scanner::npos;
+      for (const Declarator& d : Declarators(scan, k + 1, &end)) {
+        members.push_back({std::string(scan[d.token].text), std::string(scan[k].text), d.elements});
+      }
+      if (end == Scanner::npos) break;
+      k = end + 1;
+    }
+  }
+  for (const std::string& name : twice) out.erase(name);
+  return out;
+}
+
+// Statements setting `var` of type `type` to the sentinel, member by member and element by
+// element; none for what has no sentinel (an array of unknown size, an unknown type).
+void SentinelAssignments(const std::string& var, const std::string& type, int elements,
+                         const Structs& structs, int level, std::string* out) {
+  if (elements < 0 || level > 8) return;
+  if (elements > 0) {
+    for (int e = 0; e < elements; ++e) {
+      SentinelAssignments(fmt::format("{}[{}]", var, e), type, 0, structs, level + 1, out);
+    }
+    return;
+  }
+  const std::string value = SentinelValue(type);
+  if (!value.empty()) {
+    *out += fmt::format("{} = {}; ", var, value);
+    return;
+  }
+  auto it = structs.find(type);
+  if (it == structs.end()) return;
+  for (const Member& m : it->second) {
+    SentinelAssignments(var + "." + m.name, m.type, m.elements, structs, level + 1, out);
+  }
+}
+
+// Variables declared without an initializer, which a path may read before writing: each is
+// set to the sentinel right after its declaration (a local: an initializer, or statements
+// after its ';'), or from the wrapper's main (a global, whose initializer must be constant:
+// the statements returned).
 std::string UninitializedVariables(const Scanner& scan, std::vector<Edit>* edits) {
   static const std::set<std::string_view> kQualifiers = {
       "const", "uniform", "varying", "attribute", "in", "out", "inout", "invariant", "centroid"};
+  const Structs structs = StructsOf(scan);
   std::string globals;
   int depth = 0;
-  std::vector<bool> structs;  // per open brace: a structure's body (members, no declarations)
+  std::vector<bool> bodies;  // per open brace: a structure's body (members, not variables)
   for (size_t i = 0; i < scan.size(); ++i) {
     const std::string_view t = scan[i].text;
     if (t == "{") {
       ++depth;
-      structs.push_back((i > 0 && scan.Is(i - 1, "struct")) || (i > 1 && scan.Is(i - 2, "struct")));
+      bodies.push_back((i > 0 && scan.Is(i - 1, "struct")) || (i > 1 && scan.Is(i - 2, "struct")));
     }
     if (t == "}") {
       --depth;
-      if (!structs.empty()) structs.pop_back();
+      if (!bodies.empty()) bodies.pop_back();
     }
-    if (std::find(structs.begin(), structs.end(), true) != structs.end()) continue;
-    const bool start = i == 0 || scan.Is(i - 1, ";") || scan.Is(i - 1, "{") ||
-                       scan.Is(i - 1, "}") ||
-                       (scan.Is(i - 1, "(") && i > 1 && scan.Is(i - 2, "for"));
-    if (!start || SentinelValue(std::string(t)).empty() || !scan.Ident(i + 1)) continue;
-    if (i > 0 && kQualifiers.count(scan[i - 1].text) > 0) continue;
-    if (scan.Is(i + 2, "(")) continue;  // a function
-    const std::string value = SentinelValue(std::string(t));
-    for (size_t j = i + 1; scan.Ident(j);) {
-      size_t next = j + 1;
-      if (scan.Is(next, "[")) {  // an array: no constructor in GLSL 1.10
-        next = scan.Match(next);
-        if (next == Scanner::npos) break;
-        ++next;
-      } else if (scan.Is(next, "=")) {
-        next = scan.Assignment(next + 1);
-        if (next == Scanner::npos) break;
-      } else if (depth > 0) {
-        edits->push_back({scan[j].end, 1, 0, 0, " = " + value});
-      } else {
-        globals += fmt::format("  {} = {};\n", scan[j].text, value);
+    if (std::find(bodies.begin(), bodies.end(), true) != bodies.end()) continue;
+    const bool for_init = scan.Is(i - 1, "(") && i > 1 && scan.Is(i - 2, "for");
+    const bool start =
+        i == 0 || scan.Is(i - 1, ";") || scan.Is(i - 1, "{") || scan.Is(i - 1, "}") || for_init;
+    if (!start || (i > 0 && kQualifiers.count(scan[i - 1].text) > 0)) continue;
+    // The type: a basic type, a structure's name, or a structure defined here.
+    std::string type(t);
+    size_t first = i + 1;
+    if (t == "struct") {
+      if (!scan.Ident(i + 1) || !scan.Is(i + 2, "{")) continue;
+      type = std::string(scan[i + 1].text);
+      first = scan.Match(i + 2);
+      if (first == Scanner::npos) continue;
+      ++first;
+    } else if (SentinelValue(type).empty() && structs.find(type) == structs.end()) {
+      continue;
+    }
+    if (!scan.Ident(first) || scan.Is(first + 1, "(")) continue;  // none, or a function
+    size_t end = Scanner::npos;
+    const std::vector<Declarator> declarators = Declarators(scan, first, &end);
+    std::string after;  // a local's statements after its declaration
+    for (const Declarator& d : declarators) {
+      if (d.initialized) continue;
+      const std::string name(scan[d.token].text);
+      const std::string value = SentinelValue(type);
+      if (depth > 0 && d.elements == 0 && !value.empty()) {
+        edits->push_back({scan[d.token].end, 1, 0, 0, " = " + value});
+      } else if (depth > 0 && !for_init) {
+        SentinelAssignments(name, type, d.elements, structs, 0, &after);
+      } else if (depth == 0) {
+        SentinelAssignments(name, type, d.elements, structs, 0, &globals);
       }
-      if (!scan.Is(next, ",")) break;
-      j = next + 1;
+    }
+    if (!after.empty() && end != Scanner::npos) {
+      edits->push_back({scan[end].end, 1, 0, 0, " " + after});
     }
   }
-  return globals;
+  std::string out;
+  if (!globals.empty()) out = "  " + globals + "\n";
+  return out;
 }
 
 // Statements that set every output the stage writes to the sentinel.
