@@ -17,6 +17,7 @@
 #include "arbiter/glstate/uniforms.h"
 #include "arbiter/runtime/glsl_vulkan.h"
 #include "exec/draw.h"
+#include "exec/textures.h"
 #include "glsl_exec/types.h"
 #include "glsl_vulkan/builtin_state.h"
 #include "glsl_vulkan/shaders.h"
@@ -172,7 +173,15 @@ arbvp::Texture TextureFor(const std::string& type, int unit, const GlslExecInput
 // The built-in state and the depth mode selectors of the shadow samplers.
 bool SetEngineUniforms(const glsl::CompiledPair& compiled, const GlslShaders& shaders,
                        const GlslExecInputs& inputs, Uniforms* out, std::string* error) {
-  const arbvp::GlState& state = inputs.state;
+  // A shadow lookup expands by its texture's GL_DEPTH_TEXTURE_MODE, which GL keeps with the
+  // texture (as the Mesa engine uploads it) and glstate reads as texture[n].depthmode.
+  arbvp::GlState state = inputs.state;
+  for (const auto& [unit, texture] : inputs.textures) {
+    if (unit >= 0 && unit < glstate::kMaxTextureImageUnits) {
+      state.depth_texture_mode[static_cast<size_t>(unit)] =
+          static_cast<uint32_t>(exec::DepthTextureMode(texture.depth_mode));
+    }
+  }
   for (const glsl::CompiledUniform& c : compiled.uniforms) {
     const TypeInfo type = TypeOf(c.type);
     if (c.name.starts_with("arb_gl_")) {
@@ -498,6 +507,23 @@ bool Execute(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunRe
     if (!l->not_applicable.empty()) {
       *not_applicable = l->not_applicable;
       return false;
+    }
+  }
+  // gl_TexCoord beyond Mesa's gl_MaxTextureCoords (8), which arbiter's limits allow: the
+  // lowering declares Mesa's eight, as the Mesa engine has them.
+  for (const glsl::Reflection* r : {shaders.vertex_reflection, shaders.fragment_reflection}) {
+    if (r == nullptr) continue;
+    for (const auto* list : {&r->builtins_read, &r->builtins_written}) {
+      for (const glsl::BuiltinUse& use : *list) {
+        const bool beyond =
+            (use.name.starts_with("gl_TexCoord[") && std::stoi(use.name.substr(12)) >= 8) ||
+            (use.name == "gl_TexCoord" && use.components > 8 * 4);
+        if (beyond) {
+          *not_applicable =
+              fmt::format("not applicable: {} (Mesa's gl_MaxTextureCoords is 8)", use.name);
+          return false;
+        }
+      }
     }
   }
   const size_t count = inputs.vectors.size();
