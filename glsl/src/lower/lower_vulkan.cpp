@@ -243,6 +243,53 @@ bool Rewrite(std::string_view code, Lowering* l) {
       functions.insert(tokens[i].text);
     }
   }
+  // Globals initialized in their declaration ("vec4 p = gl_Vertex;", which 1.10 allows from
+  // any expression): SPIR-V runs such initializers before main, before the generated main has
+  // fed the inputs they may read. Each becomes "vec4 p; vec4 arb_init_p() { return
+  // gl_Vertex; }", and main's body starts with "p = arb_init_p();", in declaration order.
+  {
+    static const std::set<std::string_view> kNotTypes = {
+        "uniform", "varying", "attribute", "const", "invariant", "centroid", "return", "else"};
+    std::string inits;
+    size_t main_body = std::string::npos;
+    for (size_t i = 0, level = 0; i + 2 < tokens.size(); ++i) {
+      if (tokens[i].text == "{") ++level;
+      if (tokens[i].text == "}" && level > 0) --level;
+      if (level == 0 && tokens[i].text == "main" && tokens[i + 1].text == "(") {
+        size_t k = i + 1;
+        while (k < tokens.size() && tokens[k].text != ")") ++k;
+        if (k + 1 < tokens.size() && tokens[k + 1].text == "{") main_body = k + 1;
+      }
+      const bool start = i == 0 || tokens[i - 1].text == ";" || tokens[i - 1].text == "}";
+      if (level != 0 || !start || tokens[i].kind != Token::Identifier ||
+          kNotTypes.count(tokens[i].text) > 0 || tokens[i + 1].kind != Token::Identifier ||
+          tokens[i + 2].text != "=") {
+        continue;
+      }
+      const size_t end = StatementEnd(tokens, i);
+      int nesting = 0;
+      bool single = true;  // one declarator: "vec4 a = x, b = y;" is left alone
+      for (size_t k = i + 3; k < end; ++k) {
+        if (tokens[k].text == "(" || tokens[k].text == "[") ++nesting;
+        if (tokens[k].text == ")" || tokens[k].text == "]") --nesting;
+        if (nesting == 0 && tokens[k].text == ",") single = false;
+      }
+      // A name the loop below spells its own way (a 1.20 keyword in 1.10, a built-in
+      // function's name) keeps its initializer where it is.
+      const std::string_view declared = tokens[i + 1].text;
+      if (!single || end >= tokens.size() || lower::IsBuiltinFunction(declared) ||
+          (l->version < 120 && lower::IsKeywordFrom120(declared))) {
+        continue;
+      }
+      const std::string name = LoweredIdentifier(tokens[i + 1].text);
+      const std::string type = LoweredIdentifier(tokens[i].text);
+      dropped.insert(i + 2);
+      after[i + 1] += fmt::format("; {} arb_init_{}() {{ return", type, name);
+      after[end] += " }";
+      inits += fmt::format(" {0} = arb_init_{0}();", name);
+    }
+    if (main_body != std::string::npos && !inits.empty()) after[main_body] += inits;
+  }
   std::set<std::string> declared_unsized;
   int depth = 0;
   int struct_depth = -1;  // the depth outside the structure being defined; -1: none
