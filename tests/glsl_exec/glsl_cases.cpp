@@ -137,6 +137,18 @@ void CubeFaces(std::map<int, arbvp::Texture>& textures) {
   textures[0] = t;
 }
 
+// A 2x1 comparing depth texture (depths 0.25, 0.75, LEQUAL) whose GL_DEPTH_TEXTURE_MODE is
+// ALPHA: a shadow lookup's result r reads (0, 0, 0, r) (GL 2.0 section 3.8.14).
+void AlphaDepth(std::map<int, arbvp::Texture>& textures) {
+  arbvp::Texture t;
+  t.width = 2;
+  t.texels = {0.25f, 0, 0, 1, 0.75f, 0, 0, 1};
+  t.depth_texture = true;
+  t.compare = true;
+  t.depth_mode = arbvp::DepthMode::Alpha;
+  textures[0] = t;
+}
+
 // 8.1 Angle and trigonometry functions.
 void AngleAndTrigonometry(std::vector<GlslCase>* c) {
   const std::string a = "uniform vec4 a;\n";
@@ -387,6 +399,11 @@ void Textures(std::vector<GlslCase>* c) {
   Add(c, "shadow2d", "8.7 shadow2D", "uniform sampler2DShadow t;\nuniform vec2 u;\n",
       "r = vec4(shadow2D(t, vec3(u.x, 0.2, 0.5)).xy, shadow2D(t, vec3(u.y, 0.2, 0.5)).xw);",
       {"t=0", "u=0.6,0.1"}, {1, 1, 0, 1}, More().Textures({"0=2d:depth-gradient-compare:4x2"}));
+  // Under ALPHA: r = 0.5 <= 0.75 at s = .75 passes: (0, 0, 0, 1); <= 0.25 at s = .25 fails.
+  Add(c, "shadow2d_alpha", "8.7 shadow2D; GL 2.0 3.8.14 DEPTH_TEXTURE_MODE",
+      "uniform sampler2DShadow t;\nuniform vec2 u;\n",
+      "r = shadow2D(t, vec3(u.x, 0.5, 0.5)) + shadow2D(t, vec3(u.y, 0.5, 0.5)) * 2.0;",
+      {"t=0", "u=0.75,0.25"}, {0, 0, 0, 1}, More().MakeTextures(AlphaDepth));
   // shadow2DProj: (1.2, .4, 1, 2) / 2 = (.6, .2, .5): passes; r = 1.6 / 2 = .8 fails.
   Add(c, "shadow2d_proj", "8.7 shadow2DProj", "uniform sampler2DShadow t;\nuniform vec4 u;\n",
       "r = vec4(shadow2DProj(t, u).x, shadow2DProj(t, vec4(u.xy, 1.6, u.w)).x, 0.0, 0.0);",
