@@ -104,23 +104,6 @@ std::string_view DepthModeName(DepthMode mode) {
   return "?";
 }
 
-// "2D 4x4 linear repeat", "3D 4x8x4 ...", "CUBE 8x8 ...", with "depth compare lequal
-// luminance" for depth textures.
-std::string DescribeTexture(const Texture& t) {
-  std::string size = fmt::format("{}", t.width);
-  if (t.dim != TexDim::Tex1D) size += fmt::format("x{}", t.height);
-  if (t.dim == TexDim::Tex3D) size += fmt::format("x{}", t.depth);
-  std::string text =
-      fmt::format("{} {} {} {}", TexDimName(t.dim), size,
-                  t.filter == TexFilter::Linear ? "linear" : "nearest", WrapName(t.wrap));
-  if (t.depth_texture) {
-    text += " depth";
-    if (t.compare) text += fmt::format(" compare {}", CompareName(t.compare_func));
-    text += fmt::format(" {}", DepthModeName(t.depth_mode));
-  }
-  return text;
-}
-
 // The parameter and state lines of one program; `prefix` tells a pair's programs apart.
 void DescribeParams(const Program& program, const gen::ReadInputs& read, const ExecInputs& inputs,
                     std::string_view prefix, std::set<std::string>* lines) {
@@ -150,6 +133,21 @@ void DescribeParams(const Program& program, const gen::ReadInputs& read, const E
 }
 
 }  // namespace
+
+std::string DescribeTexture(const Texture& t) {
+  std::string size = fmt::format("{}", t.width);
+  if (t.dim != TexDim::Tex1D) size += fmt::format("x{}", t.height);
+  if (t.dim == TexDim::Tex3D) size += fmt::format("x{}", t.depth);
+  std::string text =
+      fmt::format("{} {} {} {}", TexDimName(t.dim), size,
+                  t.filter == TexFilter::Linear ? "linear" : "nearest", WrapName(t.wrap));
+  if (t.depth_texture) {
+    text += " depth";
+    if (t.compare) text += fmt::format(" compare {}", CompareName(t.compare_func));
+    text += fmt::format(" {}", DepthModeName(t.depth_mode));
+  }
+  return text;
+}
 
 std::vector<std::string> DescribeReadInputs(const Program* vertex, const Program* fragment,
                                             const ExecInputs& inputs, size_t index) {

@@ -427,13 +427,17 @@ Structs StructsOf(const Scanner& scan) {
   Structs out;
   std::set<std::string> twice;
   for (size_t i = 0; i + 2 < scan.size(); ++i) {
-    if (scan[i].text != "struct" || !scan.Ident(i + 1) || !scan.Is(i + 2, "{")) continue;
-    const size_t close = scan.Match(i + 2);
+    if (scan[i].text != "struct") continue;
+    // A nameless structure is known by its brace: "@<token>".
+    const bool named = scan.Ident(i + 1) && scan.Is(i + 2, "{");
+    const size_t open = named ? i + 2 : i + 1;
+    if (!scan.Is(open, "{")) continue;
+    const size_t close = scan.Match(open);
     if (close == Scanner::npos) continue;
-    const std::string name(scan[i + 1].text);
+    const std::string name = named ? std::string(scan[i + 1].text) : fmt::format("@{}", open);
     if (out.count(name) > 0) twice.insert(name);
     std::vector<Member>& members = out[name];
-    for (size_t k = i + 3; k < close;) {
+    for (size_t k = open + 1; k < close;) {
       size_t end = Scanner::npos;
       for (const Declarator& d : Declarators(scan, k + 1, &end)) {
         members.push_back({std::string(scan[d.token].text), std::string(scan[k].text), d.elements});
@@ -499,9 +503,11 @@ std::string UninitializedVariables(const Scanner& scan, std::vector<Edit>* edits
     std::string type(t);
     size_t first = i + 1;
     if (t == "struct") {
-      if (!scan.Ident(i + 1) || !scan.Is(i + 2, "{")) continue;
-      type = std::string(scan[i + 1].text);
-      first = scan.Match(i + 2);
+      const bool named = scan.Ident(i + 1) && scan.Is(i + 2, "{");
+      const size_t open = named ? i + 2 : i + 1;
+      if (!scan.Is(open, "{")) continue;
+      type = named ? std::string(scan[i + 1].text) : fmt::format("@{}", open);
+      first = scan.Match(open);
       if (first == Scanner::npos) continue;
       ++first;
     } else if (SentinelValue(type).empty() && structs.find(type) == structs.end()) {

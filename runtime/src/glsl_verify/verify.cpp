@@ -220,9 +220,8 @@ std::vector<std::string> DescribeInputs(const GlslBatch& batch, size_t v) {
   for (const auto& [name, xs] : batch.inputs.uniforms) {
     out.push_back(fmt::format("uniform {} = {}", name, values(xs)));
   }
-  if (!batch.inputs.textures.empty()) {
-    out.push_back(fmt::format("textures: {} unit(s), drawn for batch '{}'",
-                              batch.inputs.textures.size(), batch.name));
+  for (const auto& [unit, texture] : batch.inputs.textures) {
+    out.push_back(fmt::format("texture unit {} = {}", unit, arbvp::DescribeTexture(texture)));
   }
   return out;
 }

@@ -71,6 +71,10 @@ class InputDraw {
 // must compute alike.
 const std::vector<float>& FiniteEdgeValues();
 
+// "2D 4x4 linear repeat", "3D 4x8x4 ...", "CUBE 8x8 ...", with "depth compare lequal
+// luminance" for depth textures: a texture as the disagreement reports describe it.
+std::string DescribeTexture(const Texture& t);
+
 // One line per input the program(s) read for vector `index` of `inputs`: the attribute,
 // parameter and state bindings read (bindings that instructions use; every element of a
 // relative-addressed array) with their values, and the textures sampled, e.g.
