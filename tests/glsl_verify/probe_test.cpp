@@ -160,6 +160,32 @@ TEST(GlslProbe, LookupCoordinates) {
   for (size_t i = 0; i < 4; ++i) EXPECT_EQ(glsl_verify::ReadProbe(r[i]).kinds, want[i]) << i;
 }
 
+TEST(GlslProbe, StateMatricesReadThroughTheNudge) {
+  Shader v = Load(glsl::Stage::Vertex, "n.vert",
+                  "void main() {\n"
+                  "  vec3 n = gl_NormalMatrix * gl_Normal;\n"
+                  "  gl_Position = gl_ModelViewMatrix[1] + gl_TextureMatrix[1] * gl_Vertex +\n"
+                  "                vec4(n, 0.0);\n"
+                  "}\n");
+  GlslVerifySubject subject{"n.vert", v.file.get(), nullptr, &v.reflection, nullptr};
+  const Probe probe = glsl_verify::MakeProbe(subject);
+  ASSERT_TRUE(probe.ok) << probe.why;
+  for (const char* wrapped : {"matrixCompMult(gl_NormalMatrix, arb_probe_nudge3)",
+                              "matrixCompMult(gl_ModelViewMatrix, arb_probe_nudge4)[1]",
+                              "matrixCompMult(gl_TextureMatrix[1], arb_probe_nudge4)"}) {
+    EXPECT_NE(probe.vertex.find(wrapped), std::string::npos) << wrapped << "\n" << probe.vertex;
+  }
+  // With the nudge all ones the probe computes what the shader does.
+  const std::vector<GlslVectorResult> r =
+      RunProbe(glsl::Stage::Vertex, probe, {{{"gl_Vertex", {1, 2, 3, 1}}}}, 0.25f,
+               {{glsl_verify::kNudge4Uniform, std::vector<float>(16, 1.0f)},
+                {glsl_verify::kNudge3Uniform, std::vector<float>(9, 1.0f)}});
+  ASSERT_EQ(r.size(), 1u);
+  // Identity matrices: column 1 of the modelview (0, 1, 0, 0) + the vertex + the normal
+  // (0, 0, 1).
+  EXPECT_EQ(Output(r[0], "gl_Position")->value, (std::vector<float>{1, 3, 4, 1}));
+}
+
 TEST(GlslProbe, SentinelsShowWhatAPathNeverWrote) {
   Shader v = Load(glsl::Stage::Vertex, "c.vert",
                   "varying float t;\n"

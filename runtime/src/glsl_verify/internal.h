@@ -50,6 +50,11 @@ inline constexpr const char* kSentinelUniform = "arb_probe_sentinel";
 // Where the probe reports, per stage: a vertex varying, a fragment colour output. Each holds
 // (kinds met as a sum of powers of two, the first site met or -1, 0, 0).
 inline constexpr const char* kProbeVarying = "arb_probe";
+// The probe reads every built-in state matrix through matrixCompMult with these (all ones but
+// in the nudged run): the matrices GL derives from one another (an inverse, a product) are
+// then perturbed apart, which the perturbation of the GL state itself cannot do.
+inline constexpr const char* kNudge4Uniform = "arb_probe_nudge4";
+inline constexpr const char* kNudge3Uniform = "arb_probe_nudge3";
 inline constexpr const char* kProbeFragData = "gl_FragData[7]";
 
 Probe MakeProbe(const GlslVerifySubject& subject);

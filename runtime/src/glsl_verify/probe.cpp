@@ -253,11 +253,13 @@ float Bit(glsl::HazardKind kind) { return static_cast<float>(1u << static_cast<u
 // The wrappers of the hazard kinds in `kinds`, every overload GLSL 1.20 has for them.
 std::string Helpers(const std::set<glsl::HazardKind>& kinds, bool vertex) {
   std::string out = fmt::format(
-      "float arb_probe_bits;\nfloat arb_probe_site;\nuniform float {};\n{}"
+      "float arb_probe_bits;\nfloat arb_probe_site;\nuniform float {};\n"
+      "uniform mat4 {};\nuniform mat3 {};\n{}"
       "void arb_probe_mark(float bit, float site) {{\n"
       "  if (mod(floor(arb_probe_bits / bit), 2.0) < 0.5) arb_probe_bits += bit;\n"
       "  if (arb_probe_site < 0.0) arb_probe_site = site;\n}}\n",
-      kSentinelUniform, vertex ? fmt::format("varying vec4 {};\n", kProbeVarying) : "");
+      kSentinelUniform, kNudge4Uniform, kNudge3Uniform,
+      vertex ? fmt::format("varying vec4 {};\n", kProbeVarying) : "");
   using glsl::HazardKind;
   auto one = [&](HazardKind kind, const std::string& result, const std::string& name,
                  const std::string& params, const std::string& bad, const std::string& call) {
@@ -672,6 +674,21 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
     if (!placed) continue;
     kinds.insert(h.kind);
     probe->sites.push_back(h);
+  }
+  // Every built-in state matrix read through the nudge (not in a const initializer, which
+  // cannot read uniforms anyway).
+  for (size_t i = 0; i < scan.size(); ++i) {
+    const std::string_view t = scan[i].text;
+    if (!t.starts_with("gl_") || t.find("Matrix") == std::string_view::npos) continue;
+    if ((i > 0 && scan.Is(i - 1, ".")) || InConstDeclaration(scan, i)) continue;
+    size_t last = i;  // the matrix: gl_TextureMatrix* with its index, the others alone
+    if (t.starts_with("gl_TextureMatrix")) {
+      if (!scan.Is(i + 1, "[")) continue;  // the array not indexed here: no matrix
+      last = scan.Match(i + 1);
+      if (last == Scanner::npos) continue;
+    }
+    const char* nudge = t == "gl_NormalMatrix" ? kNudge3Uniform : kNudge4Uniform;
+    Wrap(scan[i].begin, scan[last].end, "matrixCompMult(", fmt::format(", {})", nudge), &edits);
   }
   // What the shader reads whose value is the implementation's to choose.
   std::set<std::string> constants;

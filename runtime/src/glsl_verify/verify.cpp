@@ -232,6 +232,8 @@ struct ProbeResults {
   bool ran = false;
   std::vector<std::vector<ProbeFinding>> findings;            // [batch][vector]
   std::vector<std::vector<std::set<std::string>>> unwritten;  // [batch][vector]
+  // Components that move beyond their tolerance when the state matrices are nudged apart.
+  std::vector<std::vector<std::set<std::string>>> nudged;  // [batch][vector]
 };
 
 std::string Key(const std::string& name, const std::string& stage, size_t c) {
@@ -240,7 +242,7 @@ std::string Key(const std::string& name, const std::string& stage, size_t c) {
 
 ProbeResults RunProbe(const GlslVerifySubject& subject, const Probe& probe,
                       const std::vector<GlslBatch>& batches, const GlslVerifyOptions& options,
-                      std::string* why) {
+                      const GlslTolerance& tolerance, std::string* why) {
   ProbeResults out;
   // The probe's shaders, reflected as exec needs them.
   compiler::DiagnosticSink sink(0);
@@ -267,12 +269,24 @@ ProbeResults RunProbe(const GlslVerifySubject& subject, const Probe& probe,
     shaders.fragment = probe.fragment;
     shaders.fragment_reflection = &reflections[1];
   }
+  // Three runs of each batch: the two sentinels, then the first with the matrices nudged.
   std::vector<GlslExecInputs> inputs;
-  for (float sentinel : kSentinels) {
+  for (int run = 0; run < 3; ++run) {
     for (const GlslBatch& b : batches) {
       GlslExecInputs in = b.inputs;
-      in.uniforms.emplace_back(kSentinelUniform, std::vector<float>{sentinel});
-      in.declared_uniforms.emplace_back(kSentinelUniform);
+      in.uniforms.emplace_back(kSentinelUniform, std::vector<float>{kSentinels[run == 1]});
+      std::vector<float> nudge4(16, 1.0f);
+      std::vector<float> nudge3(9, 1.0f);
+      if (run == 2) {
+        for (size_t k = 0; k < 16; ++k)
+          nudge4[k] += (k * 7 % 3 == 0 ? 1.0f : -1.0f) * kPerturbation;
+        for (size_t k = 0; k < 9; ++k) nudge3[k] += (k * 5 % 3 == 0 ? -1.0f : 1.0f) * kPerturbation;
+      }
+      in.uniforms.emplace_back(kNudge4Uniform, std::move(nudge4));
+      in.uniforms.emplace_back(kNudge3Uniform, std::move(nudge3));
+      for (const char* u : {kSentinelUniform, kNudge4Uniform, kNudge3Uniform}) {
+        in.declared_uniforms.emplace_back(u);
+      }
       inputs.push_back(std::move(in));
     }
   }
@@ -294,15 +308,24 @@ ProbeResults RunProbe(const GlslVerifySubject& subject, const Probe& probe,
   out.ran = true;
   out.findings.resize(n);
   out.unwritten.resize(n);
+  out.nudged.resize(n);
   for (size_t b = 0; b < n; ++b) {
     const auto& first = runs.runs[b].vectors;
     const auto& second = runs.runs[n + b].vectors;
+    const auto& nudged = runs.runs[2 * n + b].vectors;
     out.findings[b].resize(first.size());
     out.unwritten[b].resize(first.size());
+    out.nudged[b].resize(first.size());
     for (size_t v = 0; v < first.size() && v < second.size(); ++v) {
       out.findings[b][v] = ReadProbe(first[v]);
       if (first[v].discarded || second[v].discarded) continue;
       for (const GlslOutput& o : first[v].outputs) {
+        const GlslOutput* q = v < nudged.size() ? Find(nudged[v], o.name, o.stage) : nullptr;
+        for (size_t c = 0; q != nullptr && c < o.value.size() && c < q->value.size(); ++c) {
+          if (!WithinTolerance(o.value[c], q->value[c], Scale(batches[b], v), tolerance)) {
+            out.nudged[b][v].insert(Key(o.name, o.stage, c));
+          }
+        }
         const GlslOutput* p = Find(second[v], o.name, o.stage);
         if (p == nullptr) continue;
         for (size_t c = 0; c < o.value.size() && c < p->value.size(); ++c) {
@@ -351,6 +374,9 @@ class Comparer {
       if (f.kinds != 0) {
         e.undefined = DescribeFinding(f, probe_);
         return e;
+      }
+      if (!name.empty() && probe_results_.nudged[b][v].count(Key(probe_name, stage, c)) > 0) {
+        unstable = true;
       }
     }
     e.unstable = unstable;
@@ -465,7 +491,7 @@ Verdict VerifyOne(const GlslVerifySubject& subject, const GlslVerifyOptions& opt
   if (any_difference) {
     probe = MakeProbe(subject);
     std::string why = probe.why;
-    if (probe.ok) probe_results = RunProbe(subject, probe, batches, options, &why);
+    if (probe.ok) probe_results = RunProbe(subject, probe, batches, options, tolerance, &why);
     if (!probe_results.ran) verdict.not_applicable[kGlslProbeName] = why;
   }
   Comparer comparer(probe, probe_results, probe.renamed, &verdict);
