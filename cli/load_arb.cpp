@@ -49,9 +49,13 @@ Exit LoadArbPrograms(const CommonOptions& options, std::string_view command,
         report.diagnostics.front().notes.push_back(
             {nullptr,
              {},
-             fmt::format("this is a GLSL shader: 'arbiter {}' takes ARB programs; 'arbiter "
-                         "check', 'info', 'link' and 'run' take GLSL",
-                         command)});
+             command == "verify"
+                 ? std::string("this is a GLSL shader: 'arbiter verify' takes it named by its "
+                               "stage (.vert, .frag, ...)")
+                 : fmt::format("this is a GLSL shader: 'arbiter {}' takes ARB programs; "
+                               "'arbiter check', 'info', 'link', 'exec', 'verify' and 'run' "
+                               "take GLSL",
+                               command)});
       }
       loaded->push_back(std::move(l));
     }

@@ -96,10 +96,12 @@ with tempfile.TemporaryDirectory() as tmp:
         expect(what + ": exit 1", p.returncode == 1, str(p.returncode))
 
     # 5: a GLSL shader given to an ARB command (exec runs GLSL shaders too, on Mesa).
-    for verb in ("translate", "verify"):
-        p = run([verb, "shader.frag"], tmp)
-        expect(f"{verb} of a GLSL file says it takes ARB programs",
-               f"'arbiter {verb}' takes ARB programs" in p.stderr, p.stderr)
+    p = run(["translate", "shader.frag"], tmp)
+    expect("translate of a GLSL file says it takes ARB programs",
+           "'arbiter translate' takes ARB programs" in p.stderr, p.stderr)
+    p = run(["verify", "--vectors", "4", "shader.frag"], tmp)
+    expect("verify of a GLSL file verifies it on the GLSL engines",
+           p.returncode == 0 and "shader.frag: agree" in p.stdout, p.stdout + p.stderr)
     p = run(["exec", "shader.frag"], tmp)
     expect("exec of a GLSL file runs it", p.returncode == 0 and "gl_FragColor" in p.stdout,
            p.stdout + p.stderr)
