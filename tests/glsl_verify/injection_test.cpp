@@ -78,7 +78,9 @@ std::string Label(const GlslOutput& o, size_t c) {
 // instead), and checks that exactly those sites are reported. The tamper runs in verify's
 // worker process: it writes the sites it made to a file the test reads afterwards.
 void ExpectEachCaught(const GlslVerifySubject& subject, const std::string& engine, bool discards) {
-  const std::string log = ::testing::TempDir() + "glsl_verify_injected.txt";
+  // One file per test: ctest runs the tests of this binary in parallel processes.
+  const std::string log = ::testing::TempDir() + "glsl_verify_injected_" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt";
   std::remove(log.c_str());
   GlslVerifyOptions options;
   options.engines = {kGlslEngineSoftpipe, engine};

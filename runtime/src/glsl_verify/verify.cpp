@@ -1,6 +1,7 @@
 // VerifyGlsl: per subject (a worker process each, -j at a time), the batches, each engine's
 // runs (a nested worker per engine, so that softpipe and llvmpipe each get a process of their
-// own), the baseline's runs on perturbed inputs, the probe's two runs, and the comparison.
+// own), the baseline's runs on perturbed inputs, the probe's three runs (two sentinels, the
+// nudged matrices) where engines differ, and the comparison.
 #include <fmt/format.h>
 
 #include <algorithm>
