@@ -702,6 +702,13 @@ bool InstrumentStage(glsl::Stage stage, const compiler::SourceFile& file,
       probe->static_causes.insert(
           "a division by the constant zero (GLSL 1.10 section 4.1.4: undefined)");
     }
+    if (scan[i].text == "dFdx" || scan[i].text == "dFdy" || scan[i].text == "fwidth") {
+      // One point per vector: a derivative is taken across the quad's helper invocations,
+      // by a method and to an accuracy the implementation chooses.
+      probe->static_causes.insert(
+          "a derivative (GLSL 1.10 section 8.8: its method and accuracy are the "
+          "implementation's)");
+    }
     if (scan[i].text == "gl_PointCoord") {
       probe->static_causes.insert(
           "gl_PointCoord outside a point sprite (GL 2.0 section 3.3.1: undefined)");
