@@ -24,8 +24,8 @@ struct Found {
   bool operator==(const Found&) const = default;
 };
 void PrintTo(const Found& f, std::ostream* out) {
-  *out << GetHazardInfo(f.kind).name << " " << f.line << ":" << f.column << " '" << f.text
-       << "' " << f.size;
+  *out << GetHazardInfo(f.kind).name << " " << f.line << ":" << f.column << " '" << f.text << "' "
+       << f.size;
 }
 
 std::vector<Found> Hazards(Stage stage, const std::string& text) {

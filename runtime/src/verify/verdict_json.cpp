@@ -13,10 +13,16 @@ float FromBits(uint32_t bits) { return std::bit_cast<float>(bits); }
 nlohmann::json DisagreementToJson(const Disagreement& d) {
   nlohmann::json values = nlohmann::json::object();
   for (const auto& [engine, value] : d.values) values[engine] = Bits(value);
-  return {{"batch", d.batch},         {"vector", d.vector},   {"reg", d.reg},
-          {"component", d.component}, {"label", d.label},     {"what", d.what},
+  return {{"batch", d.batch},
+          {"vector", d.vector},
+          {"reg", d.reg},
+          {"component", d.component},
+          {"label", d.label},
+          {"what", d.what},
           {"tolerance", Bits(d.tolerance)},
-          {"values", values},         {"engines", d.engines}, {"inputs", d.inputs}};
+          {"values", values},
+          {"engines", d.engines},
+          {"inputs", d.inputs}};
 }
 
 Disagreement DisagreementFromJson(const nlohmann::json& j) {

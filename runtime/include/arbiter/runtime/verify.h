@@ -76,7 +76,7 @@ struct Disagreement {
   // GLSL: the component as GLSL names it ("gl_Position.y", "m[1].z", "f"); empty for ARB,
   // whose components are register.xyzw.
   std::string label;
-  std::string what;    // "killed by ref only", "not written by mesa-glsl"; empty for a value
+  std::string what;  // "killed by ref only", "not written by mesa-glsl"; empty for a value
   float tolerance = 0.0f;
   // The value of each engine that ran ("ref", "mesa-arb", "mesa-glsl"), and those that
   // disagree with ref.
