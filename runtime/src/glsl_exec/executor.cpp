@@ -29,36 +29,46 @@ void DrainErrors(const exec::ExecGl& gl) {
   }
 }
 
-bool Declared(const GlslExecInputs& inputs, const std::string& name) {
-  const std::string base = name.substr(0, std::min(name.find('['), name.find('.')));
-  return std::find(inputs.declared_uniforms.begin(), inputs.declared_uniforms.end(), base) !=
-         inputs.declared_uniforms.end();
-}
+}  // namespace
 
-// The notes: active uniforms nobody set, and --uniform values no program kept.
-void Notes(const GlslExecInputs& inputs, const std::vector<ActiveUniform>& active,
-           const std::set<std::string>& used, const std::set<size_t>& applied,
-           std::vector<std::string>* notes) {
-  for (const ActiveUniform& u : active) {
+namespace glsl_exec {
+
+void FinishUniformNotes(const GlslExecInputs& inputs, const std::vector<UniformSeen>& active,
+                        const std::set<std::string>& used, const std::set<size_t>& applied,
+                        std::string_view compiler, GlslRunResult* result) {
+  for (const UniformSeen& u : active) {
     if (used.count(u.name) > 0) continue;
     std::string name = u.name;
     if (name.ends_with("[0]") && u.size > 1) name = name.substr(0, name.size() - 3);
-    if (glsl_exec::LookUpGlType(u.type).base == glsl_exec::BaseKind::Sampler) {
-      notes->push_back(fmt::format("sampler {} not set: reads texture unit 0", name));
-    } else {
-      notes->push_back(fmt::format("uniform {} not set: read as zero", name));
-    }
+    result->notes.push_back(u.sampler
+                                ? fmt::format("sampler {} not set: reads texture unit 0", name)
+                                : fmt::format("uniform {} not set: read as zero", name));
   }
   for (size_t a = 0; a < inputs.uniforms.size(); ++a) {
-    if (applied.count(a) == 0) {
-      notes->push_back(fmt::format(
-          "uniform {} is not active (Mesa removed it: the outputs do not depend on it): ignored",
-          inputs.uniforms[a].first));
+    if (applied.count(a) > 0) continue;
+    const std::string& name = inputs.uniforms[a].first;
+    const std::string base = name.substr(0, std::min(name.find('['), name.find('.')));
+    const std::vector<std::string>& declared = inputs.declared_uniforms;
+    if (std::find(declared.begin(), declared.end(), base) == declared.end()) {
+      // A --uniform that names nothing the shaders declare is a usage error, not a note.
+      std::vector<std::string> names;
+      names.reserve(active.size());
+      for (const UniformSeen& u : active) names.push_back(u.name);
+      result->usage_error =
+          fmt::format("--uniform {}: the shaders have no uniform '{}'{}", name, name,
+                      names.empty() ? std::string()
+                                    : fmt::format("; active uniforms: {}", fmt::join(names, ", ")));
+      result->vectors.clear();
+      result->notes.clear();
+      return;
     }
+    result->notes.push_back(fmt::format(
+        "uniform {} is not active ({} removed it: the outputs do not depend on it): ignored", name,
+        compiler));
   }
 }
 
-}  // namespace
+}  // namespace glsl_exec
 
 bool RunGlsl(const ExecOptions& options, const GlslShaders& shaders, const GlslExecInputs& inputs,
              GlslRunResult* result, std::string* error) {
@@ -110,23 +120,12 @@ bool RunGlsl(const ExecOptions& options, const GlslShaders& shaders, const GlslE
     return true;
   }
   if (!ok) return false;
-  Notes(inputs, active, used, applied, &result->notes);
-  // A --uniform that names nothing the shaders declare is a usage error, not a note.
-  for (size_t a = 0; a < inputs.uniforms.size(); ++a) {
-    const std::string& name = inputs.uniforms[a].first;
-    if (applied.count(a) == 0 && !Declared(inputs, name)) {
-      std::vector<std::string> names;
-      names.reserve(active.size());
-      for (const ActiveUniform& u : active) names.push_back(u.name);
-      result->usage_error =
-          fmt::format("--uniform {}: the shaders have no uniform '{}'{}", name, name,
-                      names.empty() ? std::string()
-                                    : fmt::format("; active uniforms: {}", fmt::join(names, ", ")));
-      result->vectors.clear();
-      result->notes.clear();
-      return true;
-    }
+  std::vector<glsl_exec::UniformSeen> seen;
+  for (const ActiveUniform& u : active) {
+    seen.push_back(
+        {u.name, u.size, glsl_exec::LookUpGlType(u.type).base == glsl_exec::BaseKind::Sampler});
   }
+  glsl_exec::FinishUniformNotes(inputs, seen, used, applied, "Mesa", result);
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "arbiter/runtime/glsl_exec.h"
@@ -57,6 +58,21 @@ struct ActiveUniform {
   GLint size = 1;  // array elements
 };
 std::vector<ActiveUniform> ActiveUniforms(const Gl& gl, GLuint program);
+
+// What either engine (Mesa's, glsl_vulkan's) knows of an active user uniform at the end of a
+// run.
+struct UniformSeen {
+  std::string name;  // "w[0]" for an array
+  int size = 1;      // array elements
+  bool sampler = false;
+};
+// The end of a run of either engine: a note for each active uniform nobody set and for each
+// --uniform the program does not keep (`compiler` removed it: "Mesa", "glslang"); or, for a
+// --uniform that names nothing the shaders declare, the usage error (vectors and notes
+// cleared).
+void FinishUniformNotes(const GlslExecInputs& inputs, const std::vector<UniformSeen>& active,
+                        const std::set<std::string>& used, const std::set<size_t>& applied,
+                        std::string_view compiler, GlslRunResult* result);
 
 // Where --uniform `name` lands in the active uniform `active` (GL's name: "w[0]" for an array
 // of `size` elements): the first element, and whether it may set several (the whole array).

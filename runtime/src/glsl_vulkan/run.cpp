@@ -222,45 +222,6 @@ bool SetEngineUniforms(const glsl::CompiledPair& compiled, const GlslShaders& sh
   return true;
 }
 
-bool Declared(const GlslExecInputs& inputs, const std::string& name) {
-  const std::string base = name.substr(0, std::min(name.find('['), name.find('.')));
-  return std::find(inputs.declared_uniforms.begin(), inputs.declared_uniforms.end(), base) !=
-         inputs.declared_uniforms.end();
-}
-
-// RunGlsl's notes and its usage error for a --uniform that names nothing declared.
-void Notes(const GlslExecInputs& inputs, const std::vector<ActiveUniform>& active,
-           const std::set<std::string>& used, const std::set<size_t>& applied,
-           GlslRunResult* result) {
-  for (const ActiveUniform& u : active) {
-    if (used.count(u.name) > 0) continue;
-    std::string name = u.name;
-    if (name.ends_with("[0]") && u.size > 1) name = name.substr(0, name.size() - 3);
-    result->notes.push_back(TypeOf(u.type).base == BaseKind::Sampler
-                                ? fmt::format("sampler {} not set: reads texture unit 0", name)
-                                : fmt::format("uniform {} not set: read as zero", name));
-  }
-  for (size_t a = 0; a < inputs.uniforms.size(); ++a) {
-    if (applied.count(a) > 0) continue;
-    const std::string& name = inputs.uniforms[a].first;
-    if (!Declared(inputs, name)) {
-      std::vector<std::string> names;
-      names.reserve(active.size());
-      for (const ActiveUniform& u : active) names.push_back(u.name);
-      result->usage_error =
-          fmt::format("--uniform {}: the shaders have no uniform '{}'{}", name, name,
-                      names.empty() ? std::string()
-                                    : fmt::format("; active uniforms: {}", fmt::join(names, ", ")));
-      result->vectors.clear();
-      result->notes.clear();
-      return;
-    }
-    result->notes.push_back(fmt::format(
-        "uniform {} is not active (glslang removed it: the outputs do not depend on it): ignored",
-        name));
-  }
-}
-
 // One draw of every vector on lavapipe.
 class Draw {
  public:
@@ -547,7 +508,11 @@ bool Execute(const GlslShaders& shaders, const GlslExecInputs& inputs, GlslRunRe
     result->vectors.clear();
     return true;
   }
-  Notes(inputs, active, used, applied, result);
+  std::vector<glsl_exec::UniformSeen> seen;
+  for (const ActiveUniform& u : active) {
+    seen.push_back({u.name, u.size, TypeOf(u.type).base == BaseKind::Sampler});
+  }
+  glsl_exec::FinishUniformNotes(inputs, seen, used, applied, "glslang", result);
   if (!result->usage_error.empty()) return true;
   if (!SetEngineUniforms(compiled, shaders, inputs, &uniforms, error)) return false;
 
